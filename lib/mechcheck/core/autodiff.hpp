@@ -1,0 +1,164 @@
+#pragma once
+/// Forward-mode automatic differentiation over Eigen's AutoDiffScalar, in every tier.
+///
+/// `ad<T>` carries a value of type T and a dynamic vector of derivatives of type T.
+/// Nesting `ad<ad<T>>` gives second derivatives. Functions to be differentiated are
+/// generic: they take `Eigen::Matrix<S, Dynamic, 1>` for any scalar S and return S.
+/// Constants inside such functions go through `lift<S>(value)`, which builds the nested
+/// constant from a value of any tier (`1/sqrt(r2)` does not compile for nested types).
+///
+/// Two rules for such functions:
+///  - return exactly S (declare `-> S`): an `auto` return hands back an Eigen expression
+///    that references temporaries (enforced by a static_assert in the helpers);
+///  - combine two computed terms through named S values (`const S a = x * y;
+///    const S b = u * v; return a + b;`), not in one expression: a constant has an empty
+///    derivative vector, and AutoDiffScalar reconciles it with a sized one only between
+///    stored values (an expression-to-expression sum of mismatched sizes is undefined).
+
+#include <type_traits>
+
+#include "mechcheck/core/precision.hpp"
+
+#include <unsupported/Eigen/AutoDiff>
+
+namespace mechcheck {
+
+template <class T>
+using dynamic_vector = Eigen::Matrix<T, Eigen::Dynamic, 1>;
+template <class T>
+using dynamic_matrix = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
+
+/// AD scalar over T with a dynamic number of directions.
+template <class T>
+using ad = Eigen::AutoDiffScalar<dynamic_vector<T>>;
+
+template <class T>
+struct is_ad : std::false_type {};
+template <class D>
+struct is_ad<Eigen::AutoDiffScalar<D>> : std::true_type {};
+template <class T>
+inline constexpr bool is_ad_v = is_ad<T>::value;
+
+/// The real type under any number of AD layers.
+template <class T>
+struct real_type {
+  using type = T;
+};
+template <class D>
+struct real_type<Eigen::AutoDiffScalar<D>> {
+  using type = typename real_type<typename D::Scalar>::type;
+};
+template <class T>
+using real_type_t = typename real_type<T>::type;
+
+/// Lift a constant into T, through every AD layer: the result has zero derivatives.
+/// `v` is any value convertible to the innermost real type (an int, a tier scalar).
+template <class T, class V>
+T lift(const V& v) {
+  if constexpr (is_ad_v<T>) {
+    using inner = typename T::DerType::Scalar;
+    return T(lift<inner>(v));
+  } else {
+    return T(v);
+  }
+}
+
+/// The value of x with every AD layer stripped.
+template <class T>
+real_type_t<T> innermost_value(const T& x) {
+  if constexpr (is_ad_v<T>) {
+    return innermost_value(x.value());
+  } else {
+    return x;
+  }
+}
+
+/// Functions given to the AD helpers must return exactly their argument's scalar type:
+/// an `auto` return would hand back an Eigen expression that references temporaries
+/// which die with the function. Declare the return type: `[]<class S>(...) -> S`.
+template <class F, class Arg, class Expected>
+inline constexpr bool returns_exactly_v =
+    std::is_same_v<std::decay_t<std::invoke_result_t<F&, const Arg&>>, Expected>;
+
+#define MECHCHECK_REQUIRE_SCALAR_RESULT(F, Arg, Expected)                                   \
+  static_assert(::mechcheck::returns_exactly_v<F, Arg, Expected>,                           \
+                "mechcheck: the function must return its scalar type, not an expression " \
+                "(declare the return type, e.g. []<class S>(...) -> S)")
+
+/// Seed x as n independent AD variables: variable i has derivative e_i.
+template <class T>
+dynamic_vector<ad<T>> seed(const dynamic_vector<T>& x) {
+  const Eigen::Index n = x.size();
+  dynamic_vector<ad<T>> out(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    dynamic_vector<T> d = dynamic_vector<T>::Constant(n, lift<T>(0));
+    d(i) = lift<T>(1);
+    out(i) = ad<T>(x(i), d);
+  }
+  return out;
+}
+
+/// Derivatives of an AD result; an empty vector (a constant result) reads as zeros.
+template <class T>
+dynamic_vector<T> derivatives_of(const ad<T>& y, Eigen::Index n) {
+  if (y.derivatives().size() == 0) return dynamic_vector<T>::Constant(n, lift<T>(0));
+  return y.derivatives();
+}
+
+/// Value and gradient of a scalar function f: R^n -> R at x.
+template <class T, class F>
+std::pair<T, dynamic_vector<T>> value_and_gradient(F&& f, const dynamic_vector<T>& x) {
+  MECHCHECK_REQUIRE_SCALAR_RESULT(F, dynamic_vector<ad<T>>, ad<T>);
+  const ad<T> y = f(seed(x));
+  return {y.value(), derivatives_of(y, x.size())};
+}
+
+/// Gradient of a scalar function f: R^n -> R at x.
+template <class T, class F>
+dynamic_vector<T> gradient(F&& f, const dynamic_vector<T>& x) {
+  return value_and_gradient(std::forward<F>(f), x).second;
+}
+
+/// Jacobian J_ij = dF_i/dx_j of a vector map F: R^n -> R^m at x.
+template <class T, class F>
+dynamic_matrix<T> jacobian(F&& f, const dynamic_vector<T>& x) {
+  MECHCHECK_REQUIRE_SCALAR_RESULT(F, dynamic_vector<ad<T>>, dynamic_vector<ad<T>>);
+  const dynamic_vector<ad<T>> y = f(seed(x));
+  dynamic_matrix<T> jac(y.size(), x.size());
+  for (Eigen::Index i = 0; i < y.size(); ++i) jac.row(i) = derivatives_of(y(i), x.size()).transpose();
+  return jac;
+}
+
+/// Hessian H_ij = d2f/dx_i dx_j of a scalar function at x, by nested forward AD.
+template <class T, class F>
+dynamic_matrix<T> hessian(F&& f, const dynamic_vector<T>& x) {
+  const Eigen::Index n = x.size();
+  // Outer layer differentiates the inner gradient: x_i -> ad<ad<T>> with value seeded
+  // (inner derivative e_i) and outer derivative e_i (inner derivatives zero, sized n).
+  const dynamic_vector<ad<T>> inner = seed(x);
+  dynamic_vector<ad<ad<T>>> outer(n);
+  const ad<T> zero(lift<T>(0), dynamic_vector<T>::Constant(n, lift<T>(0)));
+  const ad<T> one(lift<T>(1), dynamic_vector<T>::Constant(n, lift<T>(0)));
+  for (Eigen::Index i = 0; i < n; ++i) {
+    dynamic_vector<ad<T>> d = dynamic_vector<ad<T>>::Constant(n, zero);
+    d(i) = one;
+    outer(i) = ad<ad<T>>(inner(i), d);
+  }
+  MECHCHECK_REQUIRE_SCALAR_RESULT(F, dynamic_vector<ad<ad<T>>>, ad<ad<T>>);
+  const ad<ad<T>> y = f(outer);
+  dynamic_matrix<T> h = dynamic_matrix<T>::Constant(n, n, lift<T>(0));
+  if (y.derivatives().size() == 0) return h;
+  for (Eigen::Index i = 0; i < n; ++i) h.row(i) = derivatives_of(y.derivatives()(i), n).transpose();
+  return h;
+}
+
+/// Directional derivative d/de f(x + e v) at e = 0.
+template <class T, class F>
+T directional_derivative(F&& f, const dynamic_vector<T>& x, const dynamic_vector<T>& v) {
+  MECHCHECK_REQUIRE_SCALAR_RESULT(F, dynamic_vector<ad<T>>, ad<T>);
+  dynamic_vector<ad<T>> xs(x.size());
+  for (Eigen::Index i = 0; i < x.size(); ++i) xs(i) = ad<T>(x(i), dynamic_vector<T>::Constant(1, v(i)));
+  return derivatives_of(f(xs), 1)(0);
+}
+
+}  // namespace mechcheck

@@ -1,0 +1,62 @@
+#pragma once
+/// Text for values in messages and reports: enough digits to reproduce the value exactly.
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include "mechcheck/core/autodiff.hpp"
+#include "mechcheck/core/errors.hpp"
+
+namespace mechcheck {
+
+/// A scalar of any tier (AD layers stripped) with max_digits10 significant digits;
+/// NaN prints as "nan" whatever its sign bit.
+template <class T>
+  requires(!std::is_base_of_v<Eigen::EigenBase<T>, T>)
+std::string to_text(const T& x) {
+  using R = real_type_t<T>;
+  using std::isnan;
+  using boost::multiprecision::isnan;
+  const R v = innermost_value(x);
+  if (isnan(v)) return "nan";
+  std::ostringstream os;
+  os.precision(std::numeric_limits<R>::max_digits10);
+  os << v;
+  return os.str();
+}
+
+/// A vector as "(x0, x1, ...)".
+template <class Derived>
+std::string to_text(const Eigen::MatrixBase<Derived>& v) {
+  std::string s = "(";
+  for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + to_text(v(i));
+  return s + ")";
+}
+
+/// True when x (AD layers stripped) is neither NaN nor infinite.
+template <class T>
+bool is_finite(const T& x) {
+  using std::isfinite;
+  using boost::multiprecision::isfinite;
+  return static_cast<bool>(isfinite(innermost_value(x)));
+}
+
+/// First index of a non-finite entry, or -1.
+template <class Derived>
+Eigen::Index first_non_finite(const Eigen::MatrixBase<Derived>& v) {
+  for (Eigen::Index i = 0; i < v.size(); ++i)
+    if (!is_finite(v(i))) return i;
+  return -1;
+}
+
+/// Throws domain_error "where: what must be positive and finite, got value".
+template <class P>
+void require_positive(const P& value, const char* where, const char* what) {
+  if (!(is_finite(value) && value > 0))
+    throw domain_error(std::string(where) + ": " + what + " must be positive and finite, got " +
+                       to_text(value));
+}
+
+}  // namespace mechcheck

@@ -1,0 +1,174 @@
+#include "mechcheck/harness/report.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+namespace mechcheck::harness {
+
+namespace {
+using json = nlohmann::ordered_json;
+
+json to_json(const law_result& r) {
+  json j;
+  j["id"] = r.info.id;
+  j["title"] = r.info.title;
+  j["equations"] = r.info.equations;
+  j["tier"] = r.tier;
+  j["digits"] = r.digits;
+  j["cases"] = r.cases;
+  j["passed"] = r.passed;
+  j["max_residual_eps"] = r.max_residual_eps;
+  j["rms_residual_eps"] = r.rms_residual_eps;
+  j["budget_eps"] = r.budget_eps;
+  j["worst_check"] = r.worst_check;
+  j["base_seed"] = r.base_seed;
+  j["seed"] = r.seed;
+  j["reproduce"] = r.reproduce;
+  if (r.info.expect == expectation::falsified) {
+    j["erratum"] = r.info.erratum;
+    j["counterexample"] = r.counterexample;
+  }
+  if (!r.message.empty()) j["message"] = r.message;
+  return j;
+}
+
+law_result from_json(const json& j) {
+  law_result r;
+  r.info.id = j.at("id");
+  r.info.title = j.at("title");
+  r.info.equations = j.at("equations").get<std::vector<std::string>>();
+  r.tier = j.at("tier");
+  r.digits = j.at("digits");
+  r.cases = j.at("cases");
+  r.passed = j.at("passed");
+  r.max_residual_eps = j.at("max_residual_eps");
+  r.rms_residual_eps = j.at("rms_residual_eps");
+  r.budget_eps = j.at("budget_eps");
+  r.worst_check = j.at("worst_check");
+  r.base_seed = j.at("base_seed");
+  r.seed = j.at("seed");
+  r.reproduce = j.at("reproduce");
+  if (j.contains("erratum")) {
+    r.info.expect = expectation::falsified;
+    r.info.erratum = j.at("erratum");
+    r.counterexample = j.at("counterexample");
+  }
+  if (j.contains("message")) r.message = j.at("message");
+  return r;
+}
+
+std::string join(const std::vector<std::string>& v, const char* sep) {
+  std::string s;
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? sep : "") + v[i];
+  return s;
+}
+
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, x != 0 && (x < 0.01 || x >= 1e6) ? "%.2e" : "%.2f", x);
+  return buf;
+}
+
+std::string verdict(const law_result& r) {
+  if (r.info.expect == expectation::falsified) return r.passed ? "erratum shown" : "FAIL";
+  return r.passed ? "pass" : "FAIL";
+}
+}  // namespace
+
+void write_row(const law_result& row, const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  const auto path = dir / (row.info.id + "." + row.tier + ".json");
+  std::ofstream out(path);
+  out << to_json(row).dump(2) << "\n";
+  if (!out) throw std::runtime_error("write_row: cannot write " + path.string());
+}
+
+std::vector<law_result> read_rows(const std::filesystem::path& dir) {
+  std::vector<law_result> rows;
+  if (!std::filesystem::is_directory(dir)) return rows;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    if (e.path().extension() != ".json") continue;
+    std::ifstream in(e.path());
+    try {
+      rows.push_back(from_json(json::parse(in)));
+    } catch (const std::exception& ex) {
+      throw std::runtime_error("read_rows: " + e.path().string() + ": " + ex.what());
+    }
+  }
+  std::sort(rows.begin(), rows.end(), [](const law_result& a, const law_result& b) {
+    return a.info.id != b.info.id ? a.info.id < b.info.id : a.digits < b.digits;
+  });
+  return rows;
+}
+
+void write_report(const std::vector<law_result>& rows, const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  json doc;
+  doc["laws"] = json::array();
+  doc["errata"] = json::array();
+  for (const auto& r : rows)
+    doc[r.info.expect == expectation::holds ? "laws" : "errata"].push_back(to_json(r));
+  doc["base_seed"] = rows.empty() ? 0 : rows.front().base_seed;
+  std::ofstream(dir / "laws.json") << doc.dump(2) << "\n";
+
+  std::ostringstream md;
+  md << "# Law report\n\n"
+     << "Residuals are in units of the tier's epsilon times the law's natural scale; the "
+        "budget is the tolerance the law derives from its computation.\n\n"
+     << "| law | title | eqs | tier | digits | cases | max eps | RMS eps | budget | result |\n"
+     << "|---|---|---|---|---:|---:|---:|---:|---:|---|\n";
+  for (const auto& r : rows) {
+    if (r.info.expect != expectation::holds) continue;
+    md << "| " << r.info.id << " | " << r.info.title << " | " << join(r.info.equations, ", ")
+       << " | " << r.tier << " | " << r.digits << " | " << r.cases << " | "
+       << number(r.max_residual_eps) << " | " << number(r.rms_residual_eps) << " | "
+       << number(r.budget_eps) << " | " << verdict(r) << " |\n";
+  }
+  md << "\n## Errata of the notes\n\n"
+     << "Each printed form is falsified by a property; its shrunk counterexample is the "
+        "evidence.\n\n"
+     << "| erratum | eqs | tier | printed and correct form | counterexample | result |\n"
+     << "|---|---|---|---|---|---|\n";
+  for (const auto& r : rows) {
+    if (r.info.expect != expectation::falsified) continue;
+    std::string ce = r.counterexample;
+    std::replace(ce.begin(), ce.end(), '\n', ' ');
+    md << "| " << r.info.id << " | " << join(r.info.equations, ", ") << " | " << r.tier << " | "
+       << r.info.erratum << " | `" << ce << "` | " << verdict(r) << " |\n";
+  }
+  std::ofstream(dir / "laws.md") << md.str();
+}
+
+std::string format_table(const std::vector<law_result>& rows) {
+  std::size_t wid = 3, wtitle = 5, weq = 3;
+  for (const auto& r : rows) {
+    wid = std::max(wid, r.info.id.size());
+    wtitle = std::max(wtitle, std::min<std::size_t>(r.info.title.size(), 48));
+    weq = std::max(weq, join(r.info.equations, ",").size());
+  }
+  std::ostringstream os;
+  char line[512];
+  const auto row = [&](const std::string& id, const std::string& title, const std::string& eq,
+                       const std::string& tier, const std::string& cases, const std::string& mx,
+                       const std::string& rms, const std::string& budget,
+                       const std::string& result) {
+    std::snprintf(line, sizeof line, "%-*s  %-*s  %-*s  %-8s  %6s  %10s  %10s  %10s  %s\n",
+                  static_cast<int>(wid), id.c_str(), static_cast<int>(wtitle),
+                  title.substr(0, 48).c_str(), static_cast<int>(weq), eq.c_str(), tier.c_str(),
+                  cases.c_str(), mx.c_str(), rms.c_str(), budget.c_str(), result.c_str());
+    os << line;
+  };
+  row("law", "title", "eqs", "tier", "cases", "max eps", "rms eps", "budget", "result");
+  for (const auto& r : rows)
+    row(r.info.id, r.info.title, join(r.info.equations, ","), r.tier, std::to_string(r.cases),
+        number(r.max_residual_eps), number(r.rms_residual_eps), number(r.budget_eps),
+        verdict(r));
+  return os.str();
+}
+
+}  // namespace mechcheck::harness

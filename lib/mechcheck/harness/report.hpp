@@ -1,0 +1,29 @@
+#pragma once
+/// The law report: one JSON row per law and tier, gathered into laws.json and laws.md.
+///
+/// laws.json is a contract: {"laws": [row...], "errata": [row...], "base_seed": N} where a
+/// row is {"id", "title", "equations": ["283", ...], "tier", "digits", "cases", "passed",
+/// "max_residual_eps", "rms_residual_eps"} plus "budget_eps", "worst_check", "seed",
+/// "reproduce" and, for errata, "erratum" and "counterexample".
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "mechcheck/harness/result.hpp"
+
+namespace mechcheck::harness {
+
+/// Write `<dir>/<id>.<tier>.json`.
+void write_row(const law_result& row, const std::filesystem::path& dir);
+
+/// Read every row written by write_row in dir, sorted by id and then digits.
+std::vector<law_result> read_rows(const std::filesystem::path& dir);
+
+/// laws.json and laws.md in dir.
+void write_report(const std::vector<law_result>& rows, const std::filesystem::path& dir);
+
+/// The law table as aligned plain text.
+std::string format_table(const std::vector<law_result>& rows);
+
+}  // namespace mechcheck::harness

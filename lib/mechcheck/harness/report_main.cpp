@@ -1,0 +1,63 @@
+/// mechcheck_report --rows DIR --out DIR [--expect FILE]
+/// Gathers the rows the property tests wrote, writes laws.json and laws.md, prints the
+/// law table, and exits 1 when a law failed or an expected row (a line of FILE, as
+/// printed by `<property executable> --list-laws`) is missing.
+
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <string>
+
+#include "mechcheck/harness/report.hpp"
+
+int main(int argc, char** argv) {
+  using namespace mechcheck::harness;
+  std::string rows_dir, out_dir, expect_file;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string key = argv[i];
+    if (key == "--rows") rows_dir = argv[i + 1];
+    else if (key == "--out") out_dir = argv[i + 1];
+    else if (key == "--expect") expect_file = argv[i + 1];
+    else {
+      std::cerr << "mechcheck_report: unknown option " << key << "\n";
+      return 2;
+    }
+  }
+  if (rows_dir.empty() || out_dir.empty()) {
+    std::cerr << "usage: mechcheck_report --rows DIR --out DIR [--expect FILE]\n";
+    return 2;
+  }
+  const auto rows = read_rows(rows_dir);
+  write_report(rows, out_dir);
+  std::cout << format_table(rows);
+  int failed = 0;
+  std::set<std::string> seen;
+  for (const auto& r : rows) {
+    seen.insert(r.info.id + "." + r.tier);
+    if (!r.passed) {
+      ++failed;
+      std::cout << "\nFAILED " << r.info.id << " [" << r.tier << "]\n" << r.message << "\n";
+    }
+  }
+  int missing = 0;
+  if (!expect_file.empty()) {
+    std::ifstream in(expect_file);
+    for (std::string name; std::getline(in, name);) {
+      if (!name.empty() && !seen.count(name)) {
+        ++missing;
+        std::cout << "MISSING " << name << " (its test did not write a row: crashed or not run)\n";
+      }
+    }
+  }
+  std::size_t laws = 0, errata = 0;
+  std::set<std::string> ids;
+  for (const auto& r : rows) {
+    (r.info.expect == expectation::holds ? laws : errata) += 1;
+    ids.insert(r.info.id);
+  }
+  std::cout << "\n" << ids.size() << " laws and errata, " << laws << " law rows, " << errata
+            << " erratum rows: " << rows.size() - failed << " passed, " << failed << " failed"
+            << (missing ? ", " + std::to_string(missing) + " missing" : std::string()) << "\n"
+            << "report: " << out_dir << "/laws.json, " << out_dir << "/laws.md\n";
+  return failed || missing ? 1 : 0;
+}

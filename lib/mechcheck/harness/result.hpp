@@ -1,0 +1,52 @@
+#pragma once
+/// What a law run produces, and the run configuration shared by ctest and the report.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace mechcheck::harness {
+
+/// A law either holds (a theorem) or is expected to be falsified (the printed form of a
+/// misprinted equation: its shrunk counterexample is the evidence of the erratum).
+enum class expectation { holds, falsified };
+
+/// Metadata of a law, written once next to its property.
+struct law_info {
+  std::string id;                      ///< "family.name", e.g. "poisson.jacobi"
+  std::string title;                   ///< one line, in words
+  std::vector<std::string> equations;  ///< the notes' equation numbers it verifies
+  expectation expect = expectation::holds;
+  std::string erratum;  ///< for falsified laws: "printed: ...; correct: ..."
+};
+
+/// Seed and number of cases; the same configuration gives the same cases and report.
+struct run_config {
+  std::uint64_t base_seed = 20261122;  ///< MECHCHECK_SEED overrides
+  int cases = 100;                     ///< MECHCHECK_CASES overrides
+  /// Read MECHCHECK_SEED and MECHCHECK_CASES; throws std::invalid_argument on bad text.
+  static run_config from_environment();
+  /// The RapidCheck seed of one law: the base seed mixed with the law id (not the tier,
+  /// so every tier sees the same generated cases).
+  std::uint64_t seed_for(const std::string& law_id) const;
+};
+
+/// One row of the report: one law in one tier.
+struct law_result {
+  law_info info;
+  std::string tier;
+  int digits = 0;
+  int cases = 0;
+  bool passed = false;
+  double max_residual_eps = 0;  ///< max over cases of the worst check, in eps * scale
+  double rms_residual_eps = 0;  ///< RMS over cases of the worst check
+  double budget_eps = 0;        ///< the largest tolerance a check allowed, in eps * scale
+  std::string worst_check;      ///< the check that gave max_residual_eps
+  std::uint64_t base_seed = 0;
+  std::uint64_t seed = 0;
+  std::string counterexample;  ///< shrunk counterexample, one "value" per line
+  std::string message;         ///< failure text, or empty
+  std::string reproduce;       ///< exact command that reruns this law in this tier
+};
+
+}  // namespace mechcheck::harness

@@ -1,0 +1,134 @@
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+#include "mechcheck/harness/law.hpp"
+
+namespace mechcheck::harness {
+
+std::vector<registered_law>& registry() {
+  static std::vector<registered_law> laws;
+  return laws;
+}
+
+recorder*& active_recorder() {
+  thread_local recorder* active = nullptr;
+  return active;
+}
+
+namespace {
+std::uint64_t parse_unsigned(const char* name, const char* text) {
+  std::size_t used = 0;
+  const std::string s(text);
+  unsigned long long v = 0;
+  try {
+    v = std::stoull(s, &used, 0);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != s.size() || s.front() == '-')
+    throw std::invalid_argument(std::string("run_config: ") + name +
+                                " must be a non-negative integer, got '" + s + "'");
+  return v;
+}
+
+// splitmix64 finaliser: a stable, platform-independent mix.
+std::uint64_t mix(std::uint64_t z) {
+  z += 0x9e3779b97f4a7c15ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+std::string executable_path() {
+  std::error_code ec;
+  const auto p = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string("<test executable>") : p.string();
+}
+}  // namespace
+
+run_config run_config::from_environment() {
+  run_config c;
+  if (const char* s = std::getenv("MECHCHECK_SEED"); s && *s)
+    c.base_seed = parse_unsigned("MECHCHECK_SEED", s);
+  if (const char* s = std::getenv("MECHCHECK_CASES"); s && *s) {
+    const auto n = parse_unsigned("MECHCHECK_CASES", s);
+    if (n == 0 || n > 1000000)
+      throw std::invalid_argument("run_config: MECHCHECK_CASES must be in 1..1000000, got " +
+                                  std::string(s));
+    c.cases = static_cast<int>(n);
+  }
+  return c;
+}
+
+std::uint64_t run_config::seed_for(const std::string& law_id) const {
+  std::uint64_t h = 0xcbf29ce484222325ULL;  // FNV-1a of the id
+  for (const unsigned char ch : law_id) h = (h ^ ch) * 0x100000001b3ULL;
+  return mix(base_seed ^ h);
+}
+
+law_result make_result(const law_info& info, const std::string& tier, int digits,
+                       const run_config& config, const rc::detail::TestResult& outcome,
+                       const recorder& rec) {
+  law_result r;
+  r.info = info;
+  r.tier = tier;
+  r.digits = digits;
+  r.base_seed = config.base_seed;
+  r.seed = config.seed_for(info.id);
+  r.max_residual_eps = rec.max_eps();
+  r.rms_residual_eps = rec.rms_eps();
+  r.budget_eps = rec.budget_eps();
+  r.worst_check = rec.worst();
+  r.cases = rec.cases();
+  {
+    std::ostringstream cmd;
+    cmd << "MECHCHECK_SEED=" << config.base_seed << " MECHCHECK_CASES=" << config.cases << " "
+        << executable_path() << " --gtest_filter='" << info.id << "." << tier << "'";
+    r.reproduce = cmd.str();
+  }
+  const bool expect_hold = info.expect == expectation::holds;
+  std::ostringstream msg;
+  if (outcome.template is<rc::detail::SuccessResult>()) {
+    r.passed = expect_hold;
+    if (!expect_hold)
+      msg << "erratum not demonstrated: the printed form held in all " << r.cases
+          << " cases, so no counterexample falsifies it";
+  } else if (outcome.template is<rc::detail::FailureResult>()) {
+    const auto& f = outcome.template get<rc::detail::FailureResult>();
+    r.passed = !expect_hold;
+    std::ostringstream ce;
+    for (const auto& [type, value] : f.counterExample) ce << value << "\n";
+    r.counterexample = ce.str();
+    if (!expect_hold) {
+      // The evidence of an erratum is its counterexample; the residual is its size.
+      r.cases = f.numSuccess + 1;
+      r.max_residual_eps = rec.failing_case_max();
+      r.rms_residual_eps = 0;
+      r.worst_check = f.description;
+    } else {
+      msg << "law " << info.id << " fails in tier " << tier << " after " << f.numSuccess
+          << " passing cases.\n"
+          << f.description << "\n"
+          << "Shrunk counterexample:\n"
+          << r.counterexample << "Seed: MECHCHECK_SEED=" << config.base_seed
+          << " (RapidCheck seed " << r.seed << ")\n"
+          << "Reproduce: " << r.reproduce << "\n";
+    }
+  } else if (outcome.template is<rc::detail::GaveUpResult>()) {
+    const auto& g = outcome.template get<rc::detail::GaveUpResult>();
+    r.passed = false;
+    msg << "law " << info.id << " gave up after " << g.numSuccess
+        << " cases (too many discarded): " << g.description << "\nReproduce: " << r.reproduce;
+  } else {
+    r.passed = false;
+    msg << "law " << info.id << ": RapidCheck error: "
+        << outcome.template get<rc::detail::Error>().description << "\nReproduce: "
+        << r.reproduce;
+  }
+  r.message = msg.str();
+  return r;
+}
+
+}  // namespace mechcheck::harness

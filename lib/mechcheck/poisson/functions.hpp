@@ -1,0 +1,122 @@
+#pragma once
+/// Standard phase-space functions: angular momentum and model Hamiltonians.
+/// Parameters are stored in a tier type P and lifted into the evaluation scalar S.
+
+#include <string>
+
+#include "mechcheck/phase_space.hpp"
+
+namespace mechcheck {
+
+namespace detail {
+template <class S>
+void require_three_dof(const dynamic_vector<S>& q, const char* where) {
+  if (q.size() != 3)
+    throw dimension_error(std::string(where) + ": needs 3 degrees of freedom (Cartesian r), got " +
+                          std::to_string(q.size()));
+}
+template <class S>
+S squared_norm(const dynamic_vector<S>& v) {
+  S s = lift<S>(0);
+  for (Eigen::Index i = 0; i < v.size(); ++i) s += v(i) * v(i);
+  return s;
+}
+}  // namespace detail
+
+/// The coordinate function (q, p) -> q_i.
+struct q_component {
+  int i;
+  template <class S>
+  S operator()(const dynamic_vector<S>& q, const dynamic_vector<S>&) const {
+    return q(i);
+  }
+};
+
+/// The momentum function (q, p) -> p_i.
+struct p_component {
+  int i;
+  template <class S>
+  S operator()(const dynamic_vector<S>&, const dynamic_vector<S>& p) const {
+    return p(i);
+  }
+};
+
+/// Component M_i of the angular momentum M = r x p, M_i = eps_ijk r_j p_k
+/// (notes lecture 22, eq. 281); index i in {0, 1, 2} for M_1, M_2, M_3. Needs n = 3.
+struct angular_momentum {
+  int i;
+  template <class S>
+  S operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& p) const {
+    detail::require_three_dof(q, "angular_momentum");
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    return q(j) * p(k) - q(k) * p(j);
+  }
+};
+
+/// M^2 = |r x p|^2. Needs n = 3.
+struct angular_momentum_squared {
+  template <class S>
+  S operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& p) const {
+    S m2 = lift<S>(0);
+    for (int i = 0; i < 3; ++i) {
+      const S mi = angular_momentum{i}(q, p);
+      m2 += mi * mi;
+    }
+    return m2;
+  }
+};
+
+/// Isotropic harmonic oscillator H = |p|^2 / (2m) + k |q|^2 / 2, any n (mass m, stiffness k).
+template <class P>
+struct harmonic_oscillator {
+  P mass, stiffness;
+  harmonic_oscillator(P m, P k) : mass(std::move(m)), stiffness(std::move(k)) {
+    require_positive(mass, "harmonic_oscillator", "mass");
+    require_positive(stiffness, "harmonic_oscillator", "stiffness");
+  }
+  template <class S>
+  S operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& p) const {
+    const S two_m = lift<S>(2) * lift<S>(mass);
+    const S half_k = lift<S>(stiffness) / lift<S>(2);
+    const S kinetic = detail::squared_norm(p) / two_m;
+    const S potential = half_k * detail::squared_norm(q);
+    return kinetic + potential;
+  }
+};
+
+/// Central-force Hamiltonian H = |p|^2 / (2m) + U(|r|) (notes eq. 255 with V = U(r)).
+/// U is a radial potential: a generic callable `U(r) -> S`.
+template <class P, class U>
+struct central_force_hamiltonian {
+  P mass;
+  U potential;
+  central_force_hamiltonian(P m, U u) : mass(std::move(m)), potential(std::move(u)) {
+    require_positive(mass, "central_force_hamiltonian", "mass");
+  }
+  template <class S>
+  S operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& p) const {
+    using std::sqrt;
+    const S r = sqrt(detail::squared_norm(q));
+    const S u = potential(r);
+    const S two_m = lift<S>(2) * lift<S>(mass);
+    const S kinetic = detail::squared_norm(p) / two_m;
+    return kinetic + u;
+  }
+};
+
+/// Power-law potential U(r) = k r^n for an integer n != 0 (Kepler: n = -1, k < 0).
+template <class P>
+struct power_law_potential {
+  P k;
+  int n;
+  template <class S>
+  S operator()(const S& r) const {
+    S rn = lift<S>(1);
+    for (int j = 0; j < (n < 0 ? -n : n); ++j) rn *= r;
+    if (n < 0) rn = lift<S>(1) / rn;
+    const S ks = lift<S>(k);
+    return ks * rn;
+  }
+};
+
+}  // namespace mechcheck

@@ -1,0 +1,248 @@
+#pragma once
+/// Every RapidCheck generator of the property suite lives here: coordinates, phase-space
+/// points, positive masses, random smooth phase-space functions, radial potentials.
+///
+/// Generated numbers are dyadic rationals (k / 256) held in doubles: they convert exactly
+/// into every tier, so one seed gives the same case in double, float128 and mpfr50, and a
+/// printed counterexample reproduces the case exactly.
+
+#include <cmath>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <rapidcheck.h>
+
+#include "mechcheck/mechcheck.hpp"
+
+namespace mechcheck::generators {
+
+/// Dyadic numbers k / 256 in [lo, hi].
+inline rc::Gen<double> dyadic(double lo, double hi) {
+  const int a = static_cast<int>(std::ceil(lo * 256)), b = static_cast<int>(std::floor(hi * 256));
+  return rc::gen::map(rc::gen::inRange(a, b + 1), [](int k) { return k / 256.0; });
+}
+
+/// Dyadic numbers k / 256 in [-bound, bound] that shrink towards 0.
+inline rc::Gen<double> dyadic_towards_zero(double bound) {
+  const int top = static_cast<int>(std::floor(bound * 256));
+  return rc::gen::map(rc::gen::pair(rc::gen::inRange(0, top + 1), rc::gen::arbitrary<bool>()),
+                      [](const std::pair<int, bool>& v) {
+                        return v.second ? -v.first / 256.0 : v.first / 256.0;
+                      });
+}
+
+/// A coordinate or momentum component in [-2, 2], shrinking towards 0.
+inline rc::Gen<double> coordinate() { return dyadic_towards_zero(2); }
+
+/// A positive mass or stiffness in [1/4, 4].
+inline rc::Gen<double> positive() { return dyadic(0.25, 4); }
+
+/// A coefficient with 1 <= |c| <= 2, shrinking towards 1.
+inline rc::Gen<double> coefficient() {
+  return rc::gen::map(rc::gen::pair(rc::gen::inRange(0, 257), rc::gen::arbitrary<bool>()),
+                      [](const std::pair<int, bool>& v) {
+                        const double c = 1 + v.first / 256.0;
+                        return v.second ? -c : c;
+                      });
+}
+
+/// Degrees of freedom n in [1, 3].
+inline rc::Gen<int> degrees_of_freedom() { return rc::gen::inRange(1, 4); }
+
+/// A phase-space point with exactly representable coordinates.
+struct phase_sample {
+  std::vector<double> q, p;
+
+  template <class Scalar>
+  phase_point<Scalar> at() const {
+    dynamic_vector<Scalar> qs(q.size()), ps(p.size());
+    for (std::size_t i = 0; i < q.size(); ++i) qs(i) = Scalar(q[i]);
+    for (std::size_t i = 0; i < p.size(); ++i) ps(i) = Scalar(p[i]);
+    return phase_point<Scalar>(qs, ps);
+  }
+};
+
+inline void showValue(const phase_sample& x, std::ostream& os) {
+  const auto vec = [&](const std::vector<double>& v) {
+    os << "(";
+    for (std::size_t i = 0; i < v.size(); ++i) os << (i ? ", " : "") << v[i];
+    os << ")";
+  };
+  os << "q = ";
+  vec(x.q);
+  os << ", p = ";
+  vec(x.p);
+}
+
+/// A phase-space point with n degrees of freedom, components in [-2, 2].
+inline rc::Gen<phase_sample> phase_points(int n) {
+  return rc::gen::build<phase_sample>(
+      rc::gen::set(&phase_sample::q, rc::gen::container<std::vector<double>>(n, coordinate())),
+      rc::gen::set(&phase_sample::p, rc::gen::container<std::vector<double>>(n, coordinate())));
+}
+
+/// A random smooth phase-space function on 2n variables z = (q, p):
+///   f(z) = sum_terms c * z^e * w(a.z + b),   w in {1, sin, cos},
+/// with monomial exponents e_i in 0..2 (total degree <= 3) and integer frequencies a_i in
+/// -2..2. Values and derivatives stay O(10) on [-2, 2]^2n, so residuals measure rounding.
+struct smooth_function {
+  enum class wave { none, sine, cosine };
+  struct term {
+    double coefficient = 1;
+    std::vector<int> exponents;    // length 2n
+    wave kind = wave::none;
+    std::vector<int> frequencies;  // length 2n
+    double phase = 0;
+  };
+  int dof = 1;
+  std::vector<term> terms;
+
+  bool has_wave() const {
+    for (const auto& t : terms)
+      if (t.kind != wave::none) return true;
+    return false;
+  }
+
+  /// True when no term depends on variable k of z = (q, p).
+  bool independent_of(int k) const {
+    for (const auto& t : terms)
+      if (t.exponents[k] != 0 || (t.kind != wave::none && t.frequencies[k] != 0)) return false;
+    return true;
+  }
+
+  template <class S>
+  S operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& p) const {
+    using std::cos;
+    using std::sin;
+    if (q.size() != dof || p.size() != dof)
+      throw dimension_error("smooth_function: defined on " + std::to_string(dof) +
+                            " degrees of freedom, called with q of " + std::to_string(q.size()) +
+                            " and p of " + std::to_string(p.size()));
+    const auto z = [&](int i) -> const S& { return i < dof ? q(i) : p(i - dof); };
+    S sum = lift<S>(0);
+    for (const auto& t : terms) {
+      S value = lift<S>(t.coefficient);
+      for (int i = 0; i < 2 * dof; ++i)
+        for (int e = 0; e < t.exponents[i]; ++e) value *= z(i);
+      if (t.kind != wave::none) {
+        S arg = lift<S>(t.phase);
+        for (int i = 0; i < 2 * dof; ++i)
+          if (t.frequencies[i] != 0) {
+            const S a = lift<S>(t.frequencies[i]);
+            arg += a * z(i);
+          }
+        const S w = t.kind == wave::sine ? S(sin(arg)) : S(cos(arg));
+        value *= w;
+      }
+      sum += value;
+    }
+    return sum;
+  }
+};
+
+inline void showValue(const smooth_function& f, std::ostream& os) {
+  const auto name = [&](int i) {
+    return (i < f.dof ? "q" : "p") + std::to_string(i < f.dof ? i : i - f.dof);
+  };
+  if (f.terms.empty()) os << "0";
+  for (std::size_t k = 0; k < f.terms.size(); ++k) {
+    const auto& t = f.terms[k];
+    os << (k ? " + " : "") << t.coefficient;
+    for (int i = 0; i < 2 * f.dof; ++i)
+      if (t.exponents[i]) os << "*" << name(i) << (t.exponents[i] > 1 ? "^2" : "");
+    if (t.kind != smooth_function::wave::none) {
+      os << "*" << (t.kind == smooth_function::wave::sine ? "sin(" : "cos(") << t.phase;
+      for (int i = 0; i < 2 * f.dof; ++i)
+        if (t.frequencies[i]) os << " + " << t.frequencies[i] << "*" << name(i);
+      os << ")";
+    }
+  }
+}
+
+namespace detail {
+inline rc::Gen<smooth_function::term> smooth_term(int dof) {
+  return rc::gen::exec([dof] {
+    smooth_function::term t;
+    t.coefficient = *coefficient();
+    t.exponents.assign(2 * dof, 0);
+    const int degree = *rc::gen::inRange(0, 4);
+    for (int d = 0; d < degree; ++d) {
+      const int i = *rc::gen::inRange(0, 2 * dof);
+      if (t.exponents[i] < 2) ++t.exponents[i];
+    }
+    t.kind = *rc::gen::element(smooth_function::wave::none, smooth_function::wave::none,
+                               smooth_function::wave::sine, smooth_function::wave::cosine);
+    t.frequencies.assign(2 * dof, 0);
+    if (t.kind != smooth_function::wave::none) {
+      for (auto& a : t.frequencies) a = *rc::gen::inRange(-2, 3);
+      t.phase = *dyadic_towards_zero(3);
+    }
+    return t;
+  });
+}
+}  // namespace detail
+
+/// A random smooth function of n degrees of freedom with 1 to 4 terms.
+inline rc::Gen<smooth_function> smooth_functions(int dof) {
+  return rc::gen::exec([dof] {
+    smooth_function f;
+    f.dof = dof;
+    const int count = *rc::gen::inRange(1, 5);
+    for (int k = 0; k < count; ++k) f.terms.push_back(*detail::smooth_term(dof));
+    return f;
+  });
+}
+
+/// A random smooth function of n degrees of freedom that does not depend on q_k.
+inline rc::Gen<smooth_function> smooth_functions_without_q(int dof, int k) {
+  return rc::gen::map(smooth_functions(dof), [k](smooth_function f) {
+    for (auto& t : f.terms) {
+      t.exponents[k] = 0;
+      t.frequencies[k] = 0;
+    }
+    return f;
+  });
+}
+
+/// A random radial potential U(r) = sum_j c_j r^j, j in {-2, -1, 1, 2, 3}, for r > 0.
+struct radial_potential {
+  std::vector<std::pair<int, double>> terms;  // (power, coefficient)
+  template <class S>
+  S operator()(const S& r) const {
+    S u = lift<S>(0);
+    for (const auto& [power, c] : terms) {
+      S rn = lift<S>(1);
+      for (int j = 0; j < (power < 0 ? -power : power); ++j) rn *= r;
+      if (power < 0) rn = lift<S>(1) / rn;
+      const S cs = lift<S>(c);
+      u += cs * rn;
+    }
+    return u;
+  }
+};
+
+inline void showValue(const radial_potential& u, std::ostream& os) {
+  os << "U(r) =";
+  for (const auto& [power, c] : u.terms) os << " + " << c << "*r^" << power;
+}
+
+inline rc::Gen<radial_potential> radial_potentials() {
+  return rc::gen::exec([] {
+    radial_potential u;
+    const int count = *rc::gen::inRange(1, 4);
+    for (int k = 0; k < count; ++k)
+      u.terms.emplace_back(*rc::gen::element(-2, -1, 1, 2, 3), *coefficient());
+    return u;
+  });
+}
+
+/// A point in R^3 x R^3 with |r| >= 1/4 (away from the centre of force).
+inline rc::Gen<phase_sample> points_away_from_origin() {
+  return rc::gen::suchThat(phase_points(3), [](const phase_sample& x) {
+    return x.q[0] * x.q[0] + x.q[1] * x.q[1] + x.q[2] * x.q[2] >= 1.0 / 16;
+  });
+}
+
+}  // namespace mechcheck::generators

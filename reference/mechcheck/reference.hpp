@@ -1,0 +1,3 @@
+#pragma once
+/// Analytic references, in any scalar type.
+#include "mechcheck/reference/harmonic_oscillator.hpp"

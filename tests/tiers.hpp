@@ -1,0 +1,28 @@
+#pragma once
+// The scalar types unit tests run in: the three law tiers and the reference tier.
+#include <gtest/gtest.h>
+
+#include "mechcheck/core/precision.hpp"
+
+namespace mechcheck::test {
+using all_tiers = ::testing::Types<double, float128, mpfr50, mpfr100>;
+
+class tier_names {
+ public:
+  template <class T>
+  static std::string GetName(int) {
+    return std::string(tier_traits<T>::name);
+  }
+};
+
+/// |a - b| <= k eps(T) max(1, |b|), with a message in eps units.
+template <class T>
+::testing::AssertionResult near_eps(const T& a, const T& b, double k) {
+  using std::abs;
+  const T scale = abs(b) > 1 ? T(abs(b)) : T(1);
+  const T err = abs(a - b) / (tier_epsilon<T>() * scale);
+  if (err <= k) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "residual " << static_cast<double>(err)
+                                       << " eps exceeds " << k << " eps";
+}
+}  // namespace mechcheck::test
