@@ -60,6 +60,10 @@ int main(int argc, char** argv) {
     std::cerr << "mechcheck: " << e.what() << "\n";
     return 2;
   }
+  // RapidCheck announces its global seed on first use; make it the base seed so the one
+  // seed a reader sees is the one that reproduces (each law's seed derives from it).
+  if (!std::getenv("RC_PARAMS"))
+    ::setenv("RC_PARAMS", ("seed=" + std::to_string(config.base_seed)).c_str(), 1);
   for (const auto& law : registry()) {
     testing::RegisterTest(law.info.id.c_str(), law.tier.c_str(), nullptr, nullptr, __FILE__,
                           __LINE__, [&law, config]() -> testing::Test* {

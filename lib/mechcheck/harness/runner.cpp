@@ -41,6 +41,14 @@ std::uint64_t mix(std::uint64_t z) {
   return z ^ (z >> 31);
 }
 
+// RapidCheck prefixes an RC_FAIL message with "file:line:\nRC_FAIL(...)\n\n"; the law's
+// own text (what, computed, expected, residual) is what a reader needs.
+std::string strip_assertion_location(const std::string& description) {
+  const std::string marker = "RC_FAIL(os.str())\n\n";
+  const auto at = description.find(marker);
+  return at == std::string::npos ? description : description.substr(at + marker.size());
+}
+
 std::string executable_path() {
   std::error_code ec;
   const auto p = std::filesystem::read_symlink("/proc/self/exe", ec);
@@ -101,16 +109,18 @@ law_result make_result(const law_info& info, const std::string& tier, int digits
     std::ostringstream ce;
     for (const auto& [type, value] : f.counterExample) ce << value << "\n";
     r.counterexample = ce.str();
+    const std::string description = strip_assertion_location(f.description);
+    // A failing row reports the residual of its first failing case, whose size is the
+    // evidence (for an erratum, of the misprint).
+    r.max_residual_eps = rec.failing_case_max();
+    r.worst_check = description;
     if (!expect_hold) {
-      // The evidence of an erratum is its counterexample; the residual is its size.
       r.cases = f.numSuccess + 1;
-      r.max_residual_eps = rec.failing_case_max();
       r.rms_residual_eps = 0;
-      r.worst_check = f.description;
     } else {
       msg << "law " << info.id << " fails in tier " << tier << " after " << f.numSuccess
           << " passing cases.\n"
-          << f.description << "\n"
+          << description << "\n"
           << "Shrunk counterexample:\n"
           << r.counterexample << "Seed: MECHCHECK_SEED=" << config.base_seed
           << " (RapidCheck seed " << r.seed << ")\n"
