@@ -129,9 +129,18 @@ dynamic_matrix<T> jacobian(F&& f, const dynamic_vector<T>& x) {
   return jac;
 }
 
-/// Hessian H_ij = d2f/dx_i dx_j of a scalar function at x, by nested forward AD.
+/// Value, gradient and Hessian of a scalar function at one point.
+template <class T>
+struct second_order {
+  T value;
+  dynamic_vector<T> gradient;
+  dynamic_matrix<T> hessian;
+};
+
+/// Value, gradient and Hessian H_ij = d2f/dx_i dx_j of f at x, from one nested forward-AD
+/// evaluation.
 template <class T, class F>
-dynamic_matrix<T> hessian(F&& f, const dynamic_vector<T>& x) {
+second_order<T> second_order_expansion(F&& f, const dynamic_vector<T>& x) {
   const Eigen::Index n = x.size();
   // Outer layer differentiates the inner gradient: x_i -> ad<ad<T>> with value seeded
   // (inner derivative e_i) and outer derivative e_i (inner derivatives zero, sized n).
@@ -146,10 +155,18 @@ dynamic_matrix<T> hessian(F&& f, const dynamic_vector<T>& x) {
   }
   MECHCHECK_REQUIRE_SCALAR_RESULT(F, dynamic_vector<ad<ad<T>>>, ad<ad<T>>);
   const ad<ad<T>> y = f(outer);
-  dynamic_matrix<T> h = dynamic_matrix<T>::Constant(n, n, lift<T>(0));
-  if (y.derivatives().size() == 0) return h;
-  for (Eigen::Index i = 0; i < n; ++i) h.row(i) = derivatives_of(y.derivatives()(i), n).transpose();
-  return h;
+  second_order<T> out{y.value().value(), derivatives_of(y.value(), n),
+                      dynamic_matrix<T>::Constant(n, n, lift<T>(0))};
+  if (y.derivatives().size() == 0) return out;
+  for (Eigen::Index i = 0; i < n; ++i)
+    out.hessian.row(i) = derivatives_of(y.derivatives()(i), n).transpose();
+  return out;
+}
+
+/// Hessian H_ij = d2f/dx_i dx_j of a scalar function at x, by nested forward AD.
+template <class T, class F>
+dynamic_matrix<T> hessian(F&& f, const dynamic_vector<T>& x) {
+  return second_order_expansion(std::forward<F>(f), x).hessian;
 }
 
 /// Directional derivative d/de f(x + e v) at e = 0.

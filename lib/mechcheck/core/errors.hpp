@@ -31,4 +31,17 @@ class domain_error : public error {
   using error::error;
 };
 
+/// A matrix that must be invertible is singular to the tier's precision
+/// (e.g. the kinetic matrix d2L/dqdot2 of a degenerate Lagrangian).
+class singular_error : public error {
+ public:
+  using error::error;
+};
+
+/// An iteration (Newton, an implicit step) did not converge to the tier's precision.
+class convergence_error : public error {
+ public:
+  using error::error;
+};
+
 }  // namespace mechcheck

@@ -1,0 +1,3 @@
+#pragma once
+/// Lagrangian systems: momenta, Euler-Lagrange equations, accelerations, energy function.
+#include "mechcheck/lagrangian/lagrangian.hpp"
