@@ -215,7 +215,7 @@ struct radial_potential {
     for (const auto& [power, c] : terms) {
       S rn = lift<S>(1);
       for (int j = 0; j < (power < 0 ? -power : power); ++j) rn *= r;
-      if (power < 0) rn = lift<S>(1) / rn;
+      if (power < 0) rn = inverse(rn);
       const S cs = lift<S>(c);
       u += cs * rn;
     }
@@ -243,6 +243,139 @@ inline rc::Gen<phase_sample> points_away_from_origin() {
   return rc::gen::suchThat(phase_points(3), [](const phase_sample& x) {
     return x.q[0] * x.q[0] + x.q[1] * x.q[1] + x.q[2] * x.q[2] >= 1.0 / 16;
   });
+}
+
+/// A pair potential of random shape: power law c r^k, Lennard-Jones-like or Morse-like.
+struct pair_potential {
+  enum class shape { power_law, lennard_jones, morse };
+  shape kind = shape::power_law;
+  double a = 1, b = 1, c = 1;  // power: (c, k = a); LJ: (depth a, size b); Morse: (a, b, r0 c)
+  int k = -1;
+
+  template <class S>
+  S operator()(const S& r) const {
+    switch (kind) {
+      case shape::power_law:
+        return models::power_law_pair<double>{a, k}(r);
+      case shape::lennard_jones:
+        return models::lennard_jones_pair<double>{a, b}(r);
+      default:
+        return models::morse_pair<double>{a, b, c}(r);
+    }
+  }
+};
+
+inline void showValue(const pair_potential& u, std::ostream& os) {
+  switch (u.kind) {
+    case pair_potential::shape::power_law:
+      os << "U(r) = " << u.a << "*r^" << u.k;
+      break;
+    case pair_potential::shape::lennard_jones:
+      os << "U(r) = " << u.a << "*((" << u.b << "/r)^12 - 2*(" << u.b << "/r)^6)";
+      break;
+    default:
+      os << "U(r) = " << u.a << "*(1 - exp(-" << u.b << "*(r - " << u.c << ")))^2 - " << u.a;
+  }
+}
+
+inline rc::Gen<pair_potential> pair_potentials() {
+  return rc::gen::exec([] {
+    pair_potential u;
+    u.kind = *rc::gen::element(pair_potential::shape::power_law,
+                               pair_potential::shape::lennard_jones, pair_potential::shape::morse);
+    switch (u.kind) {
+      case pair_potential::shape::power_law:
+        u.a = *coefficient();
+        u.k = *rc::gen::element(-1, 2, -2, 1, 3);
+        break;
+      case pair_potential::shape::lennard_jones:
+        u.a = *dyadic(0.25, 1);
+        u.b = *dyadic(0.5, 1);
+        break;
+      default:
+        u.a = *dyadic(0.25, 2);
+        u.b = *dyadic(0.5, 2);
+        u.c = *dyadic(0.5, 1.5);
+    }
+    return u;
+  });
+}
+
+/// A homogeneous pair potential c r^k (degree k in {-2, -1, 1, 2, 3}).
+inline rc::Gen<pair_potential> homogeneous_pair_potentials() {
+  return rc::gen::exec([] {
+    pair_potential u;
+    u.a = *coefficient();
+    u.k = *rc::gen::element(-1, 2, -2, 1, 3);
+    return u;
+  });
+}
+
+/// N particles (at most 8): masses, positions at pairwise distances >= 1, velocities.
+struct particle_sample {
+  std::vector<double> masses, q, qdot;
+  Eigen::Index particles() const { return static_cast<Eigen::Index>(masses.size()); }
+
+  template <class T>
+  dynamic_vector<T> positions() const {
+    dynamic_vector<T> v(q.size());
+    for (std::size_t i = 0; i < q.size(); ++i) v(i) = T(q[i]);
+    return v;
+  }
+  template <class T>
+  dynamic_vector<T> velocities() const {
+    dynamic_vector<T> v(qdot.size());
+    for (std::size_t i = 0; i < qdot.size(); ++i) v(i) = T(qdot[i]);
+    return v;
+  }
+  template <class T>
+  std::vector<T> tier_masses() const {
+    return std::vector<T>(masses.begin(), masses.end());
+  }
+};
+
+inline void showValue(const particle_sample& s, std::ostream& os) {
+  for (std::size_t i = 0; i < s.masses.size(); ++i)
+    os << (i ? "; " : "") << "m=" << s.masses[i] << " r=(" << s.q[3 * i] << ", "
+       << s.q[3 * i + 1] << ", " << s.q[3 * i + 2] << ") v=(" << s.qdot[3 * i] << ", "
+       << s.qdot[3 * i + 1] << ", " << s.qdot[3 * i + 2] << ")";
+}
+
+inline rc::Gen<particle_sample> particle_samples(int min_particles = 2, int max_particles = 4) {
+  return rc::gen::exec([=] {
+    particle_sample s;
+    const int n = *rc::gen::inRange(min_particles, max_particles + 1);
+    for (int i = 0; i < n; ++i) {
+      s.masses.push_back(*positive());
+      // Particle i sits within 1/2 of the corner i of the cube [-1, 1]^3: every pair is
+      // at least 1 apart, and the shrunk case is the corners themselves.
+      std::vector<double> r(3);
+      for (int c = 0; c < 3; ++c) r[c] = (((i >> c) & 1) ? 1.0 : -1.0) + *dyadic_towards_zero(0.5);
+      s.q.insert(s.q.end(), r.begin(), r.end());
+      for (int c = 0; c < 3; ++c) s.qdot.push_back(*coordinate());
+    }
+    return s;
+  });
+}
+
+/// A direction: three dyadic components in [-2, 2], not all zero.
+inline rc::Gen<std::vector<double>> directions() {
+  return rc::gen::suchThat(rc::gen::container<std::vector<double>>(3, coordinate()),
+                           [](const std::vector<double>& v) {
+                             return v[0] != 0 || v[1] != 0 || v[2] != 0;
+                           });
+}
+
+/// Generic (q, qdot) of n coordinates in [-2, 2].
+inline rc::Gen<std::vector<double>> coordinates(int n) {
+  return rc::gen::container<std::vector<double>>(n, coordinate());
+}
+
+template <class T>
+dynamic_vector<T> to_tier(const std::vector<double>& v) {
+  dynamic_vector<T> out(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) out(i) = T(v[i]);
+  return out;
 }
 
 }  // namespace mechcheck::generators

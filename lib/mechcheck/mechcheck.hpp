@@ -3,3 +3,7 @@
 #include "mechcheck/core.hpp"
 #include "mechcheck/phase_space.hpp"
 #include "mechcheck/poisson.hpp"
+#include "mechcheck/lagrangian.hpp"
+#include "mechcheck/hamiltonian.hpp"
+#include "mechcheck/noether.hpp"
+#include "mechcheck/models.hpp"

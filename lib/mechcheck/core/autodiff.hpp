@@ -10,10 +10,13 @@
 /// Two rules for such functions:
 ///  - return exactly S (declare `-> S`): an `auto` return hands back an Eigen expression
 ///    that references temporaries (enforced by a static_assert in the helpers);
-///  - combine two computed terms through named S values (`const S a = x * y;
-///    const S b = u * v; return a + b;`), not in one expression: a constant has an empty
-///    derivative vector, and AutoDiffScalar reconciles it with a sized one only between
-///    stored values (an expression-to-expression sum of mismatched sizes is undefined).
+///  - make constants with `lift<S>(value)`, never `S(value)`: lift gives them zero
+///    derivatives of the size the enclosing differentiation uses, and AutoDiffScalar
+///    reconciles an empty derivative vector with a sized one only between stored values
+///    (an expression mixing sizes is undefined behaviour; the Debug build asserts).
+///  - Eigen's AutoDiffScalar supports at most two nested layers over multiprecision
+///    types (a third builds Scalar(0) from an int), and its abs() does not compile over
+///    them, so Eigen's pivoting decompositions cannot take AD scalars.
 
 #include <type_traits>
 
@@ -51,16 +54,67 @@ struct real_type<Eigen::AutoDiffScalar<D>> {
 template <class T>
 using real_type_t = typename real_type<T>::type;
 
-/// Lift a constant into T, through every AD layer: the result has zero derivatives.
-/// `v` is any value convertible to the innermost real type (an int, a tier scalar).
+/// Number of directions of the AD type A being evaluated on this thread, so that constants
+/// get derivative vectors of the right size (zeros) instead of empty ones. Eigen's
+/// AutoDiffScalar reconciles an empty derivative vector with a sized one only between
+/// stored values; with sized constants every expression is coherent.
+template <class A>
+struct ad_width {
+  static inline thread_local Eigen::Index value = 0;
+};
+
+/// Sets ad_width<A> for the lifetime of the scope (the differentiation helpers use it).
+template <class A>
+class ad_width_scope {
+ public:
+  explicit ad_width_scope(Eigen::Index n) : saved_(ad_width<A>::value) { ad_width<A>::value = n; }
+  ~ad_width_scope() { ad_width<A>::value = saved_; }
+  ad_width_scope(const ad_width_scope&) = delete;
+  ad_width_scope& operator=(const ad_width_scope&) = delete;
+
+ private:
+  Eigen::Index saved_;
+};
+
+/// Lift a constant into T, through every AD layer: the result has zero derivatives (as
+/// many as the enclosing differentiation uses).
+/// `v` is any value convertible to the innermost real type (an int, a tier scalar), or a
+/// value of one of T's inner layers (an ad<S> lifted into ad<ad<S>>).
 template <class T, class V>
 T lift(const V& v) {
-  if constexpr (is_ad_v<T>) {
+  if constexpr (std::is_same_v<T, V>) {
+    return v;
+  } else if constexpr (is_ad_v<T>) {
     using inner = typename T::DerType::Scalar;
-    return T(lift<inner>(v));
+    return T(lift<inner>(v),
+             T::DerType::Constant(ad_width<T>::value, lift<inner>(0)));
   } else {
     return T(v);
   }
+}
+
+/// 1/x through every AD layer: d(1/x) = -dx / x^2. Eigen's AD division builds Scalar(1),
+/// which does not compile three layers deep over multiprecision types; use
+/// `a * inverse(b)` for a quotient of variables in generic code.
+template <class S>
+S inverse(const S& x) {
+  if constexpr (is_ad_v<S>) {
+    using inner = typename S::DerType::Scalar;
+    const inner inv = inverse(x.value());
+    const inner minus_inv2 = -(inv * inv);
+    typename S::DerType d(x.derivatives().size());
+    for (Eigen::Index i = 0; i < d.size(); ++i) d(i) = x.derivatives()(i) * minus_inv2;
+    return S(inv, d);
+  } else {
+    return S(1) / x;
+  }
+}
+
+/// The constant 1/2 in S (exact in every tier).
+template <class S>
+S half() {
+  using R = real_type_t<S>;
+  return lift<S>(R(1) / R(2));
 }
 
 /// The value of x with every AD layer stripped.
@@ -109,6 +163,7 @@ dynamic_vector<T> derivatives_of(const ad<T>& y, Eigen::Index n) {
 template <class T, class F>
 std::pair<T, dynamic_vector<T>> value_and_gradient(F&& f, const dynamic_vector<T>& x) {
   MECHCHECK_REQUIRE_SCALAR_RESULT(F, dynamic_vector<ad<T>>, ad<T>);
+  const ad_width_scope<ad<T>> width(x.size());
   const ad<T> y = f(seed(x));
   return {y.value(), derivatives_of(y, x.size())};
 }
@@ -123,6 +178,7 @@ dynamic_vector<T> gradient(F&& f, const dynamic_vector<T>& x) {
 template <class T, class F>
 dynamic_matrix<T> jacobian(F&& f, const dynamic_vector<T>& x) {
   MECHCHECK_REQUIRE_SCALAR_RESULT(F, dynamic_vector<ad<T>>, dynamic_vector<ad<T>>);
+  const ad_width_scope<ad<T>> width(x.size());
   const dynamic_vector<ad<T>> y = f(seed(x));
   dynamic_matrix<T> jac(y.size(), x.size());
   for (Eigen::Index i = 0; i < y.size(); ++i) jac.row(i) = derivatives_of(y(i), x.size()).transpose();
@@ -142,6 +198,8 @@ struct second_order {
 template <class T, class F>
 second_order<T> second_order_expansion(F&& f, const dynamic_vector<T>& x) {
   const Eigen::Index n = x.size();
+  const ad_width_scope<ad<T>> inner_width(n);
+  const ad_width_scope<ad<ad<T>>> outer_width(n);
   // Outer layer differentiates the inner gradient: x_i -> ad<ad<T>> with value seeded
   // (inner derivative e_i) and outer derivative e_i (inner derivatives zero, sized n).
   const dynamic_vector<ad<T>> inner = seed(x);
@@ -173,6 +231,7 @@ dynamic_matrix<T> hessian(F&& f, const dynamic_vector<T>& x) {
 template <class T, class F>
 T directional_derivative(F&& f, const dynamic_vector<T>& x, const dynamic_vector<T>& v) {
   MECHCHECK_REQUIRE_SCALAR_RESULT(F, dynamic_vector<ad<T>>, ad<T>);
+  const ad_width_scope<ad<T>> width(1);
   dynamic_vector<ad<T>> xs(x.size());
   for (Eigen::Index i = 0; i < x.size(); ++i) xs(i) = ad<T>(x(i), dynamic_vector<T>::Constant(1, v(i)));
   return derivatives_of(f(xs), 1)(0);

@@ -18,35 +18,6 @@ constexpr int ad_depth() {
     return 0;
 }
 
-/// Solve A x = b by elimination without pivoting, for any scalar including AD types
-/// (Eigen's pivoting decompositions do not compile over AutoDiffScalar). Used only to
-/// refine a Newton step whose matrix, the kinetic matrix d2L/dqdot2 of a physical
-/// Lagrangian, is symmetric positive definite, so no pivoting is needed.
-template <class S>
-dynamic_vector<S> solve_without_pivoting(dynamic_matrix<S> a, dynamic_vector<S> b) {
-  const Eigen::Index n = a.rows();
-  for (Eigen::Index k = 0; k < n; ++k)
-    for (Eigen::Index i = k + 1; i < n; ++i) {
-      const S f = a(i, k) / a(k, k);
-      for (Eigen::Index j = k; j < n; ++j) {
-        const S fa = f * a(k, j);
-        a(i, j) -= fa;
-      }
-      const S fb = f * b(k);
-      b(i) -= fb;
-    }
-  dynamic_vector<S> x(n);
-  for (Eigen::Index i = n - 1; i >= 0; --i) {
-    S s = b(i);
-    for (Eigen::Index j = i + 1; j < n; ++j) {
-      const S ax = a(i, j) * x(j);
-      s -= ax;
-    }
-    x(i) = s / a(i, i);
-  }
-  return x;
-}
-
 /// v -> L(q, v, t) for fixed q and t.
 template <class L, class S>
 struct lagrangian_of_velocity {
@@ -64,7 +35,7 @@ struct lagrangian_of_velocity {
 
 /// The velocities qdot that solve p = dL/dqdot(q, qdot, t) (notes eq 245), by Newton's
 /// method to the tier's precision. For AD scalars the converged value is refined by
-/// Newton steps in the AD type so that derivatives of qdot (and of H) are exact too.
+/// chord-Newton steps in the AD type so that derivatives of qdot (and of H) are exact too.
 /// Throws singular_error when d2L/dqdot2 is singular, convergence_error when Newton
 /// does not converge in 100 iterations.
 template <class S, class L>
@@ -88,8 +59,11 @@ dynamic_vector<S> velocities_from_momenta(const L& lag, const dynamic_vector<S>&
   const detail::lagrangian_of_velocity<L, R> lr{lag, qr, tr};
   dynamic_vector<R> v = dynamic_vector<R>::Constant(n, lift<R>(0));
   const R eps = tier_epsilon<R>();
+  // Converged when the step is at the rounding floor (4 eps relative), or when a step
+  // near it (within 2^10 eps) no longer halves: Newton has stagnated on rounding noise.
   bool converged = false;
   R last_step = lift<R>(0);
+  R previous_step = lift<R>(-1);
   for (int iteration = 0; iteration < 100 && !converged; ++iteration) {
     const auto e = second_order_expansion(lr, v);
     const dynamic_vector<R> residual = e.gradient - pr;
@@ -101,7 +75,10 @@ dynamic_vector<S> velocities_from_momenta(const L& lag, const dynamic_vector<S>&
     v -= step;
     last_step = step.template lpNorm<Eigen::Infinity>();
     const R size = v.template lpNorm<Eigen::Infinity>();
-    converged = last_step <= 4 * eps * (size > 1 ? size : lift<R>(1));
+    const R floor = eps * (size > 1 ? size : lift<R>(1));
+    converged = last_step <= 4 * floor ||
+                (last_step <= 1024 * floor && previous_step >= 0 && 2 * last_step > previous_step);
+    previous_step = last_step;
   }
   if (!converged)
     throw convergence_error("legendre: Newton's method for qdot did not converge in 100 "
@@ -109,14 +86,27 @@ dynamic_vector<S> velocities_from_momenta(const L& lag, const dynamic_vector<S>&
   if constexpr (std::is_same_v<S, R>) {
     return v;
   } else {
+    // Chord-Newton refinement in the AD type with the real kinetic matrix W at the
+    // solution: the iteration map has zero Jacobian there, so each step makes one more
+    // order of derivatives exact; depth + 1 steps make all of them exact. (Eigen's
+    // decompositions do not compile over AutoDiffScalar, and W in the AD type would need
+    // one more AD layer.)
+    const dynamic_matrix<R> w_inverse =
+        second_order_expansion(lr, v).hessian.fullPivLu().inverse();
     dynamic_vector<S> vs(n);
     for (Eigen::Index i = 0; i < n; ++i) vs(i) = lift<S>(v(i));
     const detail::lagrangian_of_velocity<L, S> ls{lag, q, t};
     for (int k = 0; k <= detail::ad_depth<S>(); ++k) {
-      const auto e = second_order_expansion(ls, vs);
-      const dynamic_vector<S> residual = e.gradient - p;
-      const dynamic_vector<S> step = detail::solve_without_pivoting(e.hessian, residual);
-      for (Eigen::Index i = 0; i < n; ++i) vs(i) -= step(i);
+      const dynamic_vector<S> g = gradient(ls, vs);
+      for (Eigen::Index i = 0; i < n; ++i) {
+        S step = lift<S>(0);
+        for (Eigen::Index j = 0; j < n; ++j) {
+          const S r = g(j) - p(j);
+          const S term = lift<S>(w_inverse(i, j)) * r;
+          step += term;
+        }
+        vs(i) -= step;
+      }
     }
     return vs;
   }

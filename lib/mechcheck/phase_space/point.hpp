@@ -76,6 +76,7 @@ std::pair<Scalar, dynamic_vector<Scalar>> phase_gradient(F&& f, const phase_poin
                 "mechcheck: a phase-space function f(q, p) must return its scalar type, not an "
                 "expression (declare the return type, e.g. []<class S>(...) -> S)");
   const Eigen::Index n = x.dof();
+  const ad_width_scope<A> width(2 * n);
   const avec xs = seed(x.stacked());
   const avec q = xs.head(n), p = xs.tail(n);
   const A y = f(q, p);

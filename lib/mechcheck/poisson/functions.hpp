@@ -76,9 +76,10 @@ struct harmonic_oscillator {
   }
   template <class S>
   S operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& p) const {
-    const S two_m = lift<S>(2) * lift<S>(mass);
-    const S half_k = lift<S>(stiffness) / lift<S>(2);
-    const S kinetic = detail::squared_norm(p) / two_m;
+    using R = real_type_t<S>;  // derived constants in the evaluation tier, never in P
+    const S inv_two_m = lift<S>(R(1) / (R(2) * R(mass)));
+    const S half_k = lift<S>(stiffness) * half<S>();
+    const S kinetic = detail::squared_norm(p) * inv_two_m;
     const S potential = half_k * detail::squared_norm(q);
     return kinetic + potential;
   }
@@ -98,8 +99,9 @@ struct central_force_hamiltonian {
     using std::sqrt;
     const S r = sqrt(detail::squared_norm(q));
     const S u = potential(r);
-    const S two_m = lift<S>(2) * lift<S>(mass);
-    const S kinetic = detail::squared_norm(p) / two_m;
+    using R = real_type_t<S>;  // derived constants in the evaluation tier, never in P
+    const S inv_two_m = lift<S>(R(1) / (R(2) * R(mass)));
+    const S kinetic = detail::squared_norm(p) * inv_two_m;
     return kinetic + u;
   }
 };
@@ -113,7 +115,7 @@ struct power_law_potential {
   S operator()(const S& r) const {
     S rn = lift<S>(1);
     for (int j = 0; j < (n < 0 ? -n : n); ++j) rn *= r;
-    if (n < 0) rn = lift<S>(1) / rn;
+    if (n < 0) rn = inverse(rn);
     const S ks = lift<S>(k);
     return ks * rn;
   }

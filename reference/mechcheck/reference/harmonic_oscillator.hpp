@@ -36,15 +36,19 @@ struct oscillator_flow {
     if (q0.size() != p0.size())
       throw dimension_error("oscillator_flow: q has " + std::to_string(q0.size()) +
                             " components but p has " + std::to_string(p0.size()));
-    const S w = lift<S>(frequency());
-    const S mw = lift<S>(mass) * w;
+    using R = real_type_t<S>;  // derived constants in the evaluation tier, never in P
+    using std::sqrt;
+    const R m = R(mass), wr = sqrt(R(stiffness) / m);
+    const S w = lift<S>(wr);
+    const S mw = lift<S>(R(m * wr));
+    const S inv_mw = lift<S>(R(1 / (m * wr)));
     const S wt = w * t;
     const S c = cos(wt), s = sin(wt);
     dynamic_vector<S> q(q0.size()), p(p0.size());
     for (Eigen::Index i = 0; i < q0.size(); ++i) {
       // Named terms (see mechcheck/core/autodiff.hpp on combining AD values).
       const S qc = q0(i) * c, pc = p0(i) * c;
-      const S velocity = p0(i) / mw, force = mw * q0(i);
+      const S velocity = p0(i) * inv_mw, force = mw * q0(i);
       const S vs = velocity * s, fs = force * s;
       q(i) = qc + vs;
       p(i) = pc - fs;

@@ -1,0 +1,154 @@
+#pragma once
+/// N point masses in three dimensions with pair potentials and an optional external
+/// field: q = (r_1, ..., r_N) stacked (length 3N),
+///   L = sum_i m_i |rdot_i|^2 / 2 - sum_{i<j} U(|r_i - r_j|) - sum_i V(z_i)
+/// (notes lectures 6-8: translations, rotations, time translation, broken symmetry).
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "mechcheck/core.hpp"
+
+namespace mechcheck::models {
+
+/// U(r) = c r^k for an integer k != 0 (homogeneous of degree k).
+template <class P>
+struct power_law_pair {
+  P c;
+  int k;
+  template <class S>
+  S operator()(const S& r) const {
+    S rk = lift<S>(1);
+    for (int j = 0; j < (k < 0 ? -k : k); ++j) rk *= r;
+    if (k < 0) rk = inverse(rk);
+    const S cs = lift<S>(c);
+    return cs * rk;
+  }
+};
+
+/// Lennard-Jones-like U(r) = e ((s/r)^12 - 2 (s/r)^6), minimum -e at r = s.
+template <class P>
+struct lennard_jones_pair {
+  P depth, size;
+  template <class S>
+  S operator()(const S& r) const {
+    const S x = lift<S>(size) * inverse(r);
+    const S x2 = x * x;
+    const S x6 = x2 * x2 * x2;
+    const S x12 = x6 * x6;
+    const S two_x6 = lift<S>(2) * x6;
+    const S bracket = x12 - two_x6;
+    const S e = lift<S>(depth);
+    return e * bracket;
+  }
+};
+
+/// Morse-like U(r) = D (1 - exp(-a (r - r0)))^2 - D.
+template <class P>
+struct morse_pair {
+  P depth, width, r0;
+  template <class S>
+  S operator()(const S& r) const {
+    using std::exp;
+    const S d = lift<S>(depth);
+    const S arg = lift<S>(width) * (r - lift<S>(r0));
+    const S e = exp(-arg);
+    const S one_minus = lift<S>(1) - e;
+    const S sq = one_minus * one_minus;
+    const S du = d * sq;
+    return du - d;
+  }
+};
+
+/// No external field.
+struct no_field {
+  template <class S>
+  S operator()(const S&) const {
+    return lift<S>(0);
+  }
+};
+
+/// External field along z: V(z) = a z + b z^2 (per unit of nothing: the same for every
+/// particle). Breaks translations along z and rotations about x and y; keeps the rest.
+template <class P>
+struct vertical_field {
+  P a, b;
+  template <class S>
+  S operator()(const S& z) const {
+    const S az = lift<S>(a) * z;
+    const S bz2 = lift<S>(b) * z * z;
+    return az + bz2;
+  }
+};
+
+template <class P, class Pair, class Field = no_field>
+struct particle_system {
+  std::vector<P> masses;
+  Pair pair;
+  Field field{};
+
+  particle_system(std::vector<P> m, Pair u, Field v = {})
+      : masses(std::move(m)), pair(std::move(u)), field(std::move(v)) {
+    for (std::size_t i = 0; i < masses.size(); ++i)
+      require_positive(masses[i], "particle_system", ("mass " + std::to_string(i)).c_str());
+  }
+
+  Eigen::Index particles() const { return static_cast<Eigen::Index>(masses.size()); }
+  Eigen::Index dof() const { return 3 * particles(); }
+
+  template <class S>
+  void require_size(const dynamic_vector<S>& q) const {
+    if (q.size() != dof())
+      throw dimension_error("particle_system: " + std::to_string(particles()) +
+                            " particles need 3N = " + std::to_string(dof()) +
+                            " coordinates, got " + std::to_string(q.size()));
+  }
+
+  template <class S>
+  S kinetic(const dynamic_vector<S>& qdot) const {
+    require_size(qdot);
+    S t = lift<S>(0);
+    for (Eigen::Index i = 0; i < particles(); ++i) {
+      S v2 = lift<S>(0);
+      for (int c = 0; c < 3; ++c) {
+        const S vc = qdot(3 * i + c) * qdot(3 * i + c);
+        v2 += vc;
+      }
+      const S ti = lift<S>(masses[i]) * v2 * half<S>();
+      t += ti;
+    }
+    return t;
+  }
+
+  template <class S>
+  S potential(const dynamic_vector<S>& q) const {
+    using std::sqrt;
+    require_size(q);
+    S v = lift<S>(0);
+    for (Eigen::Index i = 0; i < particles(); ++i) {
+      const S vi = field(q(3 * i + 2));
+      v += vi;
+      for (Eigen::Index j = i + 1; j < particles(); ++j) {
+        S d2 = lift<S>(0);
+        for (int c = 0; c < 3; ++c) {
+          const S dc = q(3 * i + c) - q(3 * j + c);
+          const S dc2 = dc * dc;
+          d2 += dc2;
+        }
+        const S u = pair(S(sqrt(d2)));
+        v += u;
+      }
+    }
+    return v;
+  }
+
+  template <class S>
+  S operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& qdot, const S&) const {
+    const S t = kinetic(qdot);
+    const S v = potential(q);
+    return t - v;
+  }
+};
+
+}  // namespace mechcheck::models

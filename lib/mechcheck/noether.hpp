@@ -1,0 +1,3 @@
+#pragma once
+/// Noether's theorem: generators, the symmetry condition and conserved charges.
+#include "mechcheck/noether/noether.hpp"
