@@ -7,3 +7,4 @@
 #include "mechcheck/hamiltonian.hpp"
 #include "mechcheck/noether.hpp"
 #include "mechcheck/models.hpp"
+#include "mechcheck/integrators.hpp"

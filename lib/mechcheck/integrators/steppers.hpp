@@ -1,0 +1,402 @@
+#pragma once
+/// One-step integrators for Hamiltonian systems (see systems.hpp).
+///
+/// Every stepper is a callable `stepper(state, h)` that advances a phase_state<Vec> by
+/// one step h in place; a user's own stepper satisfying the same call is audited the
+/// same way (mechcheck::stepper concept). Steppers are templated on the system and on
+/// the state vector type Vec, whose scalar may be a tier or an AD type over one (the
+/// Jacobian of a step is taken by running the stepper on AD scalars).
+///
+/// Method               order  symplectic  needs
+/// explicit_euler        1      no          vector_field
+/// rk4                   4      no          vector_field
+/// symplectic_euler      1      yes         separable (velocity, force)
+/// stormer_verlet        2      yes         separable
+/// composition<4|6|8>    4/6/8  yes         separable (triple-jump of Stormer-Verlet)
+/// gauss_legendre<1..4>  2s     yes         vector_field (implicit, any H)
+
+#include <array>
+#include <concepts>
+#include <string>
+#include <vector>
+
+#include <boost/math/special_functions/legendre.hpp>
+
+#include "mechcheck/core.hpp"
+#include "mechcheck/integrators/systems.hpp"
+
+namespace mechcheck {
+
+/// A stepper advances a state by h in place.
+template <class F, class Vec>
+concept stepper = requires(F f, phase_state<Vec>& x, const typename Vec::Scalar& h) { f(x, h); };
+
+namespace detail {
+template <class Vec>
+void require_finite_state(const phase_state<Vec>& x, const char* where) {
+  if (const auto i = first_non_finite(x.q); i >= 0)
+    throw non_finite_error(std::string(where) + ": state has q[" + std::to_string(i) +
+                           "] = " + to_text(x.q(i)));
+  if (const auto i = first_non_finite(x.p); i >= 0)
+    throw non_finite_error(std::string(where) + ": state has p[" + std::to_string(i) +
+                           "] = " + to_text(x.p(i)));
+}
+
+/// y += a * v, element by element (works for AD scalars and fixed-size vectors alike).
+template <class Vec, class S>
+void axpy(Vec& y, const S& a, const Vec& v) {
+  for (Eigen::Index i = 0; i < y.size(); ++i) {
+    const S t = a * v(i);
+    y(i) += t;
+  }
+}
+
+/// Remembers the force at the last position, for methods whose last kick and next first
+/// kick use the same position (first same as last). Off for AD scalars, where equal
+/// values can carry different derivatives.
+template <class Vec>
+class force_cache {
+ public:
+  template <class System>
+  void force(const System& system, const Vec& q, Vec& f) {
+    if constexpr (!is_ad_v<typename Vec::Scalar>) {
+      if (valid_ && q == q_) {
+        f = f_;
+        return;
+      }
+    }
+    system.force(q, f);
+    if constexpr (!is_ad_v<typename Vec::Scalar>) {
+      q_ = q;
+      f_ = f;
+      valid_ = true;
+    }
+  }
+
+ private:
+  Vec q_, f_;
+  bool valid_ = false;
+};
+}  // namespace detail
+
+/// Explicit Euler: q' = q + h dH/dp(q, p), p' = p - h dH/dq(q, p). Order 1, not symplectic.
+template <class System, class Vec>
+struct explicit_euler {
+  static constexpr int order = 1;
+  static constexpr bool symplectic = false;
+  System system;
+  void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) const {
+    detail::require_finite_state(x, "explicit_euler");
+    Vec dq = x.q, dp = x.p;
+    system.vector_field(x.q, x.p, dq, dp);
+    detail::axpy(x.q, h, dq);
+    detail::axpy(x.p, h, dp);
+  }
+};
+
+/// Classical fourth-order Runge-Kutta on (q, p). Order 4, not symplectic.
+template <class System, class Vec>
+struct rk4 {
+  static constexpr int order = 4;
+  static constexpr bool symplectic = false;
+  System system;
+  void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) const {
+    using S = typename Vec::Scalar;
+    detail::require_finite_state(x, "rk4");
+    const S half_h = h * half<S>();
+    const S sixth_h = h * lift<S>(real_type_t<S>(1) / 6);
+    Vec k1q = x.q, k1p = x.p, k2q = x.q, k2p = x.p, k3q = x.q, k3p = x.p, k4q = x.q, k4p = x.p;
+    system.vector_field(x.q, x.p, k1q, k1p);
+    Vec yq = x.q, yp = x.p;
+    detail::axpy(yq, half_h, k1q);
+    detail::axpy(yp, half_h, k1p);
+    system.vector_field(yq, yp, k2q, k2p);
+    yq = x.q;
+    yp = x.p;
+    detail::axpy(yq, half_h, k2q);
+    detail::axpy(yp, half_h, k2p);
+    system.vector_field(yq, yp, k3q, k3p);
+    yq = x.q;
+    yp = x.p;
+    detail::axpy(yq, h, k3q);
+    detail::axpy(yp, h, k3p);
+    system.vector_field(yq, yp, k4q, k4p);
+    const S two = lift<S>(2);
+    for (Eigen::Index i = 0; i < x.q.size(); ++i) {
+      const S a = k2q(i) + k3q(i);
+      const S b = k1q(i) + k4q(i);
+      const S sq = b + two * a;
+      const S c = k2p(i) + k3p(i);
+      const S d = k1p(i) + k4p(i);
+      const S sp = d + two * c;
+      const S dq = sixth_h * sq;
+      const S dp = sixth_h * sp;
+      x.q(i) += dq;
+      x.p(i) += dp;
+    }
+  }
+};
+
+/// Symplectic Euler (kick then drift): p' = p + h F(q), q' = q + h v(p'). Order 1.
+template <class System, class Vec>
+struct symplectic_euler {
+  static constexpr int order = 1;
+  static constexpr bool symplectic = true;
+  System system;
+  void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) const {
+    detail::require_finite_state(x, "symplectic_euler");
+    Vec f = x.q, v = x.p;
+    system.force(x.q, f);
+    detail::axpy(x.p, h, f);
+    system.velocity(x.p, v);
+    detail::axpy(x.q, h, v);
+  }
+};
+
+/// Stormer-Verlet (kick-drift-kick, velocity Verlet): order 2, symplectic, time
+/// reversible. Keeps the last force (first same as last): one force evaluation a step.
+template <class System, class Vec>
+class stormer_verlet {
+ public:
+  static constexpr int order = 2;
+  static constexpr bool symplectic = true;
+  explicit stormer_verlet(System system) : system_(std::move(system)) {}
+
+  void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) {
+    detail::require_finite_state(x, "stormer_verlet");
+    substep(x, h);
+  }
+
+  /// One Verlet step without the finiteness check (used by compositions).
+  void substep(phase_state<Vec>& x, const typename Vec::Scalar& h) {
+    using S = typename Vec::Scalar;
+    const S half_h = h * half<S>();
+    Vec f = x.q, v = x.p;
+    cache_.force(system_, x.q, f);
+    detail::axpy(x.p, half_h, f);
+    system_.velocity(x.p, v);
+    detail::axpy(x.q, h, v);
+    cache_.force(system_, x.q, f);
+    detail::axpy(x.p, half_h, f);
+  }
+
+  const System& system() const { return system_; }
+
+ private:
+  System system_;
+  detail::force_cache<Vec> cache_;
+};
+
+/// Triple-jump weights (Yoshida 1990; Suzuki 1990) of a symmetric composition of
+/// Stormer-Verlet of the given even order: S_{2k+2}(h) = S_{2k}(w1 h) S_{2k}(w0 h)
+/// S_{2k}(w1 h) with w1 = 1 / (2 - 2^(1/(2k+1))), w0 = 1 - 2 w1, computed in S.
+template <class S>
+std::vector<S> triple_jump_weights(int order) {
+  if (order < 2 || order % 2 != 0)
+    throw domain_error("triple_jump_weights: order must be even and >= 2, got " +
+                       std::to_string(order));
+  using std::pow;
+  std::vector<S> w{lift<S>(1)};
+  for (int k = 1; 2 * k < order; ++k) {
+    const S root = pow(lift<S>(2), lift<S>(1) / lift<S>(2 * k + 1));
+    const S w1 = lift<S>(1) / (lift<S>(2) - root);
+    const S w0 = lift<S>(1) - lift<S>(2) * w1;
+    std::vector<S> next;
+    for (const S& f : {w1, w0, w1})
+      for (const S& x : w) next.push_back(f * x);
+    w = std::move(next);
+  }
+  return w;
+}
+
+/// Symmetric composition of Stormer-Verlet of order 4, 6 or 8 (3, 9 or 27 Verlet steps,
+/// one force evaluation each). Symplectic for any weights; the order needs them exact.
+template <class System, class Vec, int Order>
+class composition {
+ public:
+  static constexpr int order = Order;
+  static constexpr bool symplectic = true;
+  using scalar = typename Vec::Scalar;
+
+  explicit composition(System system)
+      : verlet_(std::move(system)), weights_(triple_jump_weights<real_type_t<scalar>>(Order)) {}
+
+  void operator()(phase_state<Vec>& x, const scalar& h) {
+    detail::require_finite_state(x, "composition");
+    for (const auto& w : weights_) {
+      const scalar hw = lift<scalar>(w) * h;
+      verlet_.substep(x, hw);
+    }
+  }
+
+  const std::vector<real_type_t<scalar>>& weights() const { return weights_; }
+
+ private:
+  stormer_verlet<System, Vec> verlet_;
+  std::vector<real_type_t<scalar>> weights_;
+};
+
+/// Butcher tableau of the s-stage Gauss-Legendre collocation method (order 2s), in R:
+/// nodes c_i = (1 + x_i)/2 with x_i the roots of the Legendre polynomial P_s (Newton on
+/// Boost.Math's legendre_p), weights b_i, and a_ij = int_0^{c_i} l_j = c_i sum_k b_k
+/// l_j(c_i c_k) (Gauss quadrature, exact for the degree s-1 Lagrange basis l_j).
+template <class R>
+struct gauss_legendre_tableau {
+  int stages;
+  std::vector<R> c, b;
+  std::vector<std::vector<R>> a;
+
+  explicit gauss_legendre_tableau(int s) : stages(s), c(s), b(s), a(s, std::vector<R>(s)) {
+    if (s < 1 || s > 8)
+      throw domain_error("gauss_legendre_tableau: stages must be in 1..8, got " +
+                         std::to_string(s));
+    using boost::math::legendre_p;
+    using boost::math::legendre_p_prime;
+    using std::abs;
+    using std::cos;
+    const R pi = boost::math::constants::pi<R>();
+    for (int i = 0; i < s; ++i) {
+      R x = -cos(pi * (R(i) + R(3) / 4) / (R(s) + R(1) / 2));  // ascending roots
+      for (int it = 0; it < 200; ++it) {
+        const R dx = legendre_p(s, x) / legendre_p_prime(s, x);
+        x -= dx;
+        if (abs(dx) <= 2 * std::numeric_limits<R>::epsilon()) break;
+      }
+      const R dp = legendre_p_prime(s, x);
+      c[i] = (1 + x) / 2;
+      b[i] = 1 / ((1 - x * x) * dp * dp);  // Gauss weight 2/((1-x^2)P'^2), halved for [0,1]
+    }
+    for (int i = 0; i < s; ++i)
+      for (int j = 0; j < s; ++j) {
+        R sum = 0;
+        for (int k = 0; k < s; ++k) sum += b[k] * lagrange(j, c[i] * c[k]);
+        a[i][j] = c[i] * sum;
+      }
+  }
+
+  /// The Lagrange basis polynomial l_j on the nodes, at t.
+  R lagrange(int j, const R& t) const {
+    R l = 1;
+    for (int m = 0; m < stages; ++m)
+      if (m != j) l *= (t - c[m]) / (c[j] - c[m]);
+    return l;
+  }
+};
+
+/// s-stage Gauss-Legendre collocation (order 2s, symplectic, implicit) for any
+/// Hamiltonian system. Stages are solved by fixed-point iteration to the tier's
+/// precision (until the change is at the rounding floor or stops shrinking); the update
+/// uses compensated (Kahan) summation, so long runs in double follow Brouwer's law.
+/// Throws convergence_error when the iteration does not converge (h too large).
+template <class System, class Vec, int Stages>
+class gauss_legendre {
+ public:
+  static constexpr int order = 2 * Stages;
+  static constexpr bool symplectic = true;
+  using scalar = typename Vec::Scalar;
+  using real = real_type_t<scalar>;
+
+  explicit gauss_legendre(System system) : system_(std::move(system)), tableau_(Stages) {}
+
+  void operator()(phase_state<Vec>& x, const scalar& h) {
+    detail::require_finite_state(x, "gauss_legendre");
+    const Eigen::Index n = x.q.size();
+    std::array<Vec, Stages> kq, kp;
+    Vec fq = x.q, fp = x.p;
+    system_.vector_field(x.q, x.p, fq, fp);
+    for (int i = 0; i < Stages; ++i) {
+      kq[i] = fq;
+      kp[i] = fp;
+    }
+    const real eps = std::numeric_limits<real>::epsilon();
+    real previous = -1;
+    int extra = is_ad_v<scalar> ? 3 : 0;  // let derivative parts converge too
+    bool converged = false;
+    for (int iteration = 0; iteration < 500; ++iteration) {
+      real change = 0, size = 0;
+      std::array<Vec, Stages> nq = kq, np = kp;
+      for (int i = 0; i < Stages; ++i) {
+        Vec yq = x.q, yp = x.p;
+        for (int j = 0; j < Stages; ++j) {
+          const scalar ha = h * lift<scalar>(tableau_.a[i][j]);
+          detail::axpy(yq, ha, kq[j]);
+          detail::axpy(yp, ha, kp[j]);
+        }
+        system_.vector_field(yq, yp, nq[i], np[i]);
+        for (Eigen::Index m = 0; m < n; ++m) {
+          using std::abs;
+          const real dq = abs(innermost_value(nq[i](m)) - innermost_value(kq[i](m)));
+          const real dp = abs(innermost_value(np[i](m)) - innermost_value(kp[i](m)));
+          change = change > dq ? change : dq;
+          change = change > dp ? change : dp;
+          const real sq = abs(innermost_value(nq[i](m))), sp = abs(innermost_value(np[i](m)));
+          size = size > sq ? size : sq;
+          size = size > sp ? size : sp;
+        }
+      }
+      kq = nq;
+      kp = np;
+      const real floor = eps * (size > 1 ? size : real(1));
+      if (!converged)
+        converged = change <= 2 * floor ||
+                    (change <= 1024 * floor && previous >= 0 && 2 * change > previous);
+      previous = change;
+      if (converged && extra-- <= 0) break;
+      if (!is_finite(change))
+        throw non_finite_error("gauss_legendre: stage derivatives became non-finite at h = " +
+                               to_text(h) + ", q = " + to_text(x.q) + ", p = " + to_text(x.p));
+    }
+    if (!converged)
+      throw convergence_error("gauss_legendre: the fixed-point iteration for the " +
+                              std::to_string(Stages) + " stages did not converge in 500 "
+                              "iterations (last change " + to_text(previous) + ") at h = " +
+                              to_text(h) + ", q = " + to_text(x.q) + ", p = " + to_text(x.p));
+    // y' = y + h sum b_i k_i with Kahan compensation carried between steps (reset when
+    // the state was changed outside the stepper).
+    if (!(compensated_ && x.q == last_q_ && x.p == last_p_)) {
+      comp_q_ = x.q;
+      comp_p_ = x.p;
+      for (Eigen::Index m = 0; m < n; ++m) {
+        comp_q_(m) = lift<scalar>(0);
+        comp_p_(m) = lift<scalar>(0);
+      }
+    }
+    for (Eigen::Index m = 0; m < n; ++m) {
+      scalar incr_q = comp_q_(m), incr_p = comp_p_(m);
+      for (int i = 0; i < Stages; ++i) {
+        const scalar hb = h * lift<scalar>(tableau_.b[i]);
+        const scalar tq = hb * kq[i](m);
+        const scalar tp = hb * kp[i](m);
+        incr_q += tq;
+        incr_p += tp;
+      }
+      const scalar new_q = x.q(m) + incr_q;
+      const scalar new_p = x.p(m) + incr_p;
+      const scalar moved_q = new_q - x.q(m);
+      const scalar moved_p = new_p - x.p(m);
+      comp_q_(m) = incr_q - moved_q;
+      comp_p_(m) = incr_p - moved_p;
+      x.q(m) = new_q;
+      x.p(m) = new_p;
+    }
+    last_q_ = x.q;
+    last_p_ = x.p;
+    compensated_ = !is_ad_v<scalar>;
+  }
+
+  const gauss_legendre_tableau<real>& tableau() const { return tableau_; }
+
+ private:
+  System system_;
+  gauss_legendre_tableau<real> tableau_;
+  Vec comp_q_, comp_p_, last_q_, last_p_;
+  bool compensated_ = false;
+};
+
+/// Advance x by `steps` steps of size h.
+template <class Stepper, class Vec>
+void integrate(Stepper& step, phase_state<Vec>& x, const typename Vec::Scalar& h, long steps) {
+  for (long i = 0; i < steps; ++i) step(x, h);
+}
+
+}  // namespace mechcheck
