@@ -1,0 +1,148 @@
+// Lagrangian, Legendre and integrator errors on bad input, and tableau sanity.
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "mechcheck/mechcheck.hpp"
+#include "tiers.hpp"
+
+namespace {
+using namespace mechcheck;
+using mechcheck::test::near_eps;
+
+template <class F>
+std::string message_of(F&& call) {
+  try {
+    call();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "no exception";
+}
+
+/// L = (qdot_0 + qdot_1)^2 / 2: d2L/dqdot2 = [[1, 1], [1, 1]] is singular.
+struct degenerate_lagrangian {
+  template <class S>
+  S operator()(const dynamic_vector<S>&, const dynamic_vector<S>& v, const S&) const {
+    const S s = v(0) + v(1);
+    return s * s * half<S>();
+  }
+};
+
+TEST(dynamics_errors, singular_kinetic_matrix) {
+  dynamic_vector<double> q(2), v(2);
+  q << 1, 2;
+  v << 0.5, -0.25;
+  EXPECT_THROW(accelerations(degenerate_lagrangian{}, q, v, 0.0), singular_error);
+  EXPECT_EQ(message_of([&] { accelerations(degenerate_lagrangian{}, q, v, 0.0); }),
+            "accelerations: the kinetic matrix d2L/dqdot2 is singular (rank 1 of 2) at q = (1, 2), "
+            "qdot = (0.5, -0.25), t = 0");
+  const legendre_hamiltonian<degenerate_lagrangian> h{{}};
+  EXPECT_THROW(h(q, v, 0.0), singular_error);
+  EXPECT_NE(message_of([&] { h(q, v, 0.0); })
+                .find("legendre: the kinetic matrix d2L/dqdot2 is singular (rank 1 of 2)"),
+            std::string::npos);
+}
+
+TEST(dynamics_errors, non_finite_and_mismatched_state) {
+  const models::free_particle<double> free(1.0);
+  dynamic_vector<double> q(2), v(3);
+  q << 1, 2;
+  v << 0, 0, 0;
+  EXPECT_EQ(message_of([&] { accelerations(free, q, v, 0.0); }),
+            "accelerations: q has 2 components but qdot has 3");
+  dynamic_vector<double> v2(2);
+  v2 << std::numeric_limits<double>::infinity(), 0;
+  EXPECT_THROW(accelerations(free, q, v2, 0.0), non_finite_error);
+  EXPECT_EQ(message_of([&] { accelerations(free, q, v2, 0.0); }), "accelerations: qdot[0] = inf");
+  EXPECT_EQ(message_of([] { models::free_particle<double>(0.0); }),
+            "free_particle: mass must be positive and finite, got 0");
+}
+
+TEST(dynamics_errors, steppers_reject_non_finite_state) {
+  using V = Eigen::Vector2d;
+  const kepler_system<double> kepler(1.0, 1.0);
+  stormer_verlet<kepler_system<double>, V> verlet(kepler);
+  phase_state<V> x{V(1, std::numeric_limits<double>::quiet_NaN()), V(0, 1)};
+  EXPECT_THROW(verlet(x, 0.1), non_finite_error);
+  EXPECT_EQ(message_of([&] { verlet(x, 0.1); }), "stormer_verlet: state has q[1] = nan");
+  gauss_legendre<kepler_system<double>, V, 2> gl(kepler);
+  EXPECT_EQ(message_of([&] { gl(x, 0.1); }), "gauss_legendre: state has q[1] = nan");
+  EXPECT_EQ(message_of([] { kepler_system<double>(1.0, -1.0); }),
+            "kepler_system: k must be positive and finite, got -1");
+}
+
+TEST(dynamics_errors, implicit_step_that_cannot_converge) {
+  // A stiff pendulum (w = 1000) with h = 1: the fixed-point iteration's contraction
+  // factor is about h w >> 1, so it cannot converge, and the step says so.
+  using V = Eigen::Matrix<double, 1, 1>;
+  const pendulum_system<double> stiff{1.0, 1.0, 1.0e6};
+  gauss_legendre<pendulum_system<double>, V, 3> gl(stiff);
+  phase_state<V> x{V(0.5), V(0.0)};
+  try {
+    gl(x, 1.0);
+    FAIL() << "no exception";
+  } catch (const convergence_error& e) {
+    EXPECT_NE(std::string(e.what()).find("gauss_legendre: the fixed-point iteration for the 3 "
+                                         "stages did not converge in 500 iterations"),
+              std::string::npos)
+        << e.what();
+  } catch (const non_finite_error& e) {
+    EXPECT_NE(std::string(e.what()).find("gauss_legendre: stage derivatives became non-finite"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+template <class T>
+class gauss_tableau : public ::testing::Test {};
+TYPED_TEST_SUITE(gauss_tableau, mechcheck::test::all_tiers, mechcheck::test::tier_names);
+
+TYPED_TEST(gauss_tableau, two_stage_matches_closed_form) {
+  using T = TypeParam;
+  using std::sqrt;
+  const gauss_legendre_tableau<T> t(2);
+  const T r = sqrt(T(3)) / 6;
+  EXPECT_TRUE(near_eps(t.c[0], T(T(1) / 2 - r), 8));
+  EXPECT_TRUE(near_eps(t.c[1], T(T(1) / 2 + r), 8));
+  EXPECT_TRUE(near_eps(t.b[0], T(T(1) / 2), 8));
+  EXPECT_TRUE(near_eps(t.a[0][0], T(T(1) / 4), 8));
+  EXPECT_TRUE(near_eps(t.a[0][1], T(T(1) / 4 - r), 8));
+  EXPECT_TRUE(near_eps(t.a[1][0], T(T(1) / 4 + r), 8));
+}
+
+TYPED_TEST(gauss_tableau, every_tableau_is_symplectic_and_consistent) {
+  using T = TypeParam;
+  for (int s = 1; s <= 4; ++s) {
+    const gauss_legendre_tableau<T> t(s);
+    T sum_b = 0;
+    for (int i = 0; i < s; ++i) {
+      sum_b += t.b[i];
+      T row = 0;
+      for (int j = 0; j < s; ++j) {
+        row += t.a[i][j];
+        // b_i a_ij + b_j a_ji = b_i b_j: the symplecticity condition of RK methods
+        EXPECT_TRUE(near_eps(T(t.b[i] * t.a[i][j] + t.b[j] * t.a[j][i]), T(t.b[i] * t.b[j]), 64));
+      }
+      EXPECT_TRUE(near_eps(row, t.c[i], 64));
+    }
+    EXPECT_TRUE(near_eps(sum_b, T(1), 16));
+  }
+}
+
+TYPED_TEST(gauss_tableau, triple_jump_weights_sum_to_one) {
+  using T = TypeParam;
+  for (int order : {4, 6, 8}) {
+    T sum = 0;
+    T odd = 0;  // sum w^3 vanishes: the order-3 condition of a symmetric composition
+    for (const T& w : triple_jump_weights<T>(order)) {
+      sum += w;
+      odd += w * w * w;
+    }
+    EXPECT_TRUE(near_eps(sum, T(1), 64)) << order;
+    EXPECT_TRUE(near_eps(T(odd + 1), T(1), 1024)) << order;
+  }
+  EXPECT_EQ(message_of([] { triple_jump_weights<double>(5); }),
+            "triple_jump_weights: order must be even and >= 2, got 5");
+}
+}  // namespace
