@@ -34,6 +34,10 @@ concept stepper = requires(F f, phase_state<Vec>& x, const typename Vec::Scalar&
 namespace detail {
 template <class Vec>
 void require_finite_state(const phase_state<Vec>& x, const char* where) {
+  if constexpr (std::is_floating_point_v<typename Vec::Scalar>) {
+    if (x.q.allFinite() && x.p.allFinite()) [[likely]]
+      return;
+  }
   if (const auto i = first_non_finite(x.q); i >= 0)
     throw non_finite_error(std::string(where) + ": state has q[" + std::to_string(i) +
                            "] = " + to_text(x.q(i)));
@@ -42,12 +46,17 @@ void require_finite_state(const phase_state<Vec>& x, const char* where) {
                            "] = " + to_text(x.p(i)));
 }
 
-/// y += a * v, element by element (works for AD scalars and fixed-size vectors alike).
+/// y += a * v: an Eigen expression for tier scalars (vectorised), element by element for
+/// AD scalars (each product stored before it is added).
 template <class Vec, class S>
 void axpy(Vec& y, const S& a, const Vec& v) {
-  for (Eigen::Index i = 0; i < y.size(); ++i) {
-    const S t = a * v(i);
-    y(i) += t;
+  if constexpr (!is_ad_v<S>) {
+    y.noalias() += a * v;
+  } else {
+    for (Eigen::Index i = 0; i < y.size(); ++i) {
+      const S t = a * v(i);
+      y(i) += t;
+    }
   }
 }
 

@@ -41,15 +41,20 @@ struct kepler_system {
   void force(const Vec& q, Vec& dp) const {
     using S = typename Vec::Scalar;
     using std::sqrt;
-    S r2 = lift<S>(0);
-    for (Eigen::Index i = 0; i < q.size(); ++i) {
-      const S qi2 = q(i) * q(i);
-      r2 += qi2;
+    if constexpr (!is_ad_v<S>) {
+      const S r2 = q.squaredNorm();
+      dp.noalias() = (-S(k) / (r2 * sqrt(r2))) * q;
+    } else {
+      S r2 = lift<S>(0);
+      for (Eigen::Index i = 0; i < q.size(); ++i) {
+        const S qi2 = q(i) * q(i);
+        r2 += qi2;
+      }
+      const S r = sqrt(r2);
+      const S r3 = r2 * r;
+      const S minus_k_over_r3 = -lift<S>(k) * inverse(r3);
+      for (Eigen::Index i = 0; i < q.size(); ++i) dp(i) = q(i) * minus_k_over_r3;
     }
-    const S r = sqrt(r2);
-    const S r3 = r2 * r;
-    const S minus_k_over_r3 = -lift<S>(k) * inverse(r3);
-    for (Eigen::Index i = 0; i < q.size(); ++i) dp(i) = q(i) * minus_k_over_r3;
   }
   template <class Vec>
   void vector_field(const Vec& q, const Vec& p, Vec& dq, Vec& dp) const {

@@ -1,0 +1,225 @@
+/// Integrator throughput against Boost.Odeint on the same planar Kepler problem
+/// (H = |p|^2/2 - 1/|q|, q0 = (1, 0), p0 = (0, 1.1)) with the same step h = 1/100 and
+/// the same number of steps, in double and in mpfr50:
+///   mechcheck stormer_verlet  vs odeint velocity_verlet              (order 2)
+///   mechcheck composition<4>  vs odeint symplectic_rkn_sb3a_mclachlan (order 4)
+///   mechcheck rk4             vs odeint runge_kutta4                  (order 4)
+/// Run: build/bench/mechcheck_bench_integrators --benchmark_min_time=1
+/// Each benchmark reports steps per second; read ratios within one run.
+///
+/// brouwer/gauss_legendre4/double integrates 10^6 steps of Gauss-Legendre (s = 4) in
+/// double and reports the growth exponent of the energy error (Brouwer's law: 1/2 for
+/// rounding errors that behave as a random walk) and |dE/E| at the end.
+
+#include <array>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+#include <boost/numeric/odeint.hpp>
+
+#include "mechcheck/integrators.hpp"
+
+namespace {
+namespace odeint = boost::numeric::odeint;
+using mechcheck::mpfr50;
+
+constexpr int steps_per_iteration = 1000;
+
+template <class T>
+T step_size() {
+  return T(1) / T(100);
+}
+
+// --- Kepler right-hand sides in odeint's forms --------------------------------------------
+
+template <class T>
+struct kepler_acceleration {  // velocity_verlet: a(q, v, t)
+  void operator()(const std::array<T, 2>& q, const std::array<T, 2>&, std::array<T, 2>& a,
+                  T) const {
+    using std::sqrt;
+    const T r2 = q[0] * q[0] + q[1] * q[1];
+    const T inv_r3 = T(1) / (r2 * sqrt(r2));
+    a[0] = -q[0] * inv_r3;
+    a[1] = -q[1] * inv_r3;
+  }
+};
+
+template <class T>
+struct kepler_coordinate_rate {  // symplectic RKN: dq/dt = p
+  void operator()(const std::array<T, 2>& p, std::array<T, 2>& dq) const { dq = p; }
+};
+
+template <class T>
+struct kepler_momentum_rate {  // symplectic RKN: dp/dt = -q / |q|^3
+  void operator()(const std::array<T, 2>& q, std::array<T, 2>& dp) const {
+    using std::sqrt;
+    const T r2 = q[0] * q[0] + q[1] * q[1];
+    const T inv_r3 = T(1) / (r2 * sqrt(r2));
+    dp[0] = -q[0] * inv_r3;
+    dp[1] = -q[1] * inv_r3;
+  }
+};
+
+template <class T>
+struct kepler_first_order {  // runge_kutta4: d(q, p)/dt
+  void operator()(const std::array<T, 4>& x, std::array<T, 4>& dx, T) const {
+    using std::sqrt;
+    const T r2 = x[0] * x[0] + x[1] * x[1];
+    const T inv_r3 = T(1) / (r2 * sqrt(r2));
+    dx[0] = x[2];
+    dx[1] = x[3];
+    dx[2] = -x[0] * inv_r3;
+    dx[3] = -x[1] * inv_r3;
+  }
+};
+
+void count_steps(benchmark::State& state) {
+  state.counters["steps"] = benchmark::Counter(
+      static_cast<double>(state.iterations()) * steps_per_iteration, benchmark::Counter::kIsRate);
+}
+
+// --- odeint --------------------------------------------------------------------------------
+
+template <class T>
+void odeint_velocity_verlet(benchmark::State& state) {
+  using A2 = std::array<T, 2>;
+  odeint::velocity_verlet<A2, A2, T, A2, T, T> stepper;
+  std::array<T, 2> q{T(1), T(0)}, v{T(0), T(11) / T(10)};
+  const T h = step_size<T>();
+  T t = 0;
+  for (auto _ : state) {
+    for (int s = 0; s < steps_per_iteration; ++s) {
+      stepper.do_step(kepler_acceleration<T>{}, std::make_pair(std::ref(q), std::ref(v)), t, h);
+      t += h;
+    }
+    benchmark::DoNotOptimize(q);
+  }
+  count_steps(state);
+}
+
+template <class T>
+void odeint_mclachlan(benchmark::State& state) {
+  using A2 = std::array<T, 2>;
+  odeint::symplectic_rkn_sb3a_mclachlan<A2, A2, T, A2, A2, T> stepper;
+  std::array<T, 2> q{T(1), T(0)}, p{T(0), T(11) / T(10)};
+  const T h = step_size<T>();
+  T t = 0;
+  for (auto _ : state) {
+    for (int s = 0; s < steps_per_iteration; ++s) {
+      stepper.do_step(std::make_pair(kepler_coordinate_rate<T>{}, kepler_momentum_rate<T>{}),
+                      std::make_pair(std::ref(q), std::ref(p)), t, h);
+      t += h;
+    }
+    benchmark::DoNotOptimize(q);
+  }
+  count_steps(state);
+}
+
+template <class T>
+void odeint_runge_kutta4(benchmark::State& state) {
+  using A4 = std::array<T, 4>;
+  odeint::runge_kutta4<A4, T, A4, T> stepper;
+  std::array<T, 4> x{T(1), T(0), T(0), T(11) / T(10)};
+  const T h = step_size<T>();
+  T t = 0;
+  for (auto _ : state) {
+    for (int s = 0; s < steps_per_iteration; ++s) {
+      stepper.do_step(kepler_first_order<T>{}, x, t, h);
+      t += h;
+    }
+    benchmark::DoNotOptimize(x);
+  }
+  count_steps(state);
+}
+
+// --- mechcheck -----------------------------------------------------------------------------
+
+template <class T, class Stepper>
+void run_mechcheck(benchmark::State& state, Stepper stepper) {
+  using V = Eigen::Matrix<T, 2, 1>;
+  mechcheck::phase_state<V> x{V(T(1), T(0)), V(T(0), T(11) / T(10))};
+  const T h = step_size<T>();
+  for (auto _ : state) {
+    for (int s = 0; s < steps_per_iteration; ++s) stepper(x, h);
+    benchmark::DoNotOptimize(x.q);
+  }
+  count_steps(state);
+}
+
+template <class T>
+using kepler = mechcheck::kepler_system<T>;
+template <class T>
+using vec2 = Eigen::Matrix<T, 2, 1>;
+
+template <class T>
+void mechcheck_stormer_verlet(benchmark::State& state) {
+  run_mechcheck<T>(state, mechcheck::stormer_verlet<kepler<T>, vec2<T>>(kepler<T>(T(1), T(1))));
+}
+template <class T>
+void mechcheck_composition4(benchmark::State& state) {
+  run_mechcheck<T>(state, mechcheck::composition<kepler<T>, vec2<T>, 4>(kepler<T>(T(1), T(1))));
+}
+template <class T>
+void mechcheck_rk4(benchmark::State& state) {
+  run_mechcheck<T>(state, mechcheck::rk4<kepler<T>, vec2<T>>{kepler<T>(T(1), T(1))});
+}
+
+BENCHMARK(odeint_velocity_verlet<double>)->Name("double/odeint/velocity_verlet");
+BENCHMARK(mechcheck_stormer_verlet<double>)->Name("double/mechcheck/stormer_verlet");
+BENCHMARK(odeint_mclachlan<double>)->Name("double/odeint/symplectic_rkn_sb3a_mclachlan");
+BENCHMARK(mechcheck_composition4<double>)->Name("double/mechcheck/composition4");
+BENCHMARK(odeint_runge_kutta4<double>)->Name("double/odeint/runge_kutta4");
+BENCHMARK(mechcheck_rk4<double>)->Name("double/mechcheck/rk4");
+BENCHMARK(odeint_velocity_verlet<mpfr50>)->Name("mpfr50/odeint/velocity_verlet");
+BENCHMARK(mechcheck_stormer_verlet<mpfr50>)->Name("mpfr50/mechcheck/stormer_verlet");
+BENCHMARK(odeint_mclachlan<mpfr50>)->Name("mpfr50/odeint/symplectic_rkn_sb3a_mclachlan");
+BENCHMARK(mechcheck_composition4<mpfr50>)->Name("mpfr50/mechcheck/composition4");
+BENCHMARK(odeint_runge_kutta4<mpfr50>)->Name("mpfr50/odeint/runge_kutta4");
+BENCHMARK(mechcheck_rk4<mpfr50>)->Name("mpfr50/mechcheck/rk4");
+
+// --- Brouwer's law -------------------------------------------------------------------------
+
+/// Least-squares slope of log(rms energy error) against log(t) over logarithmic windows.
+void brouwer(benchmark::State& state) {
+  using V = Eigen::Vector2d;
+  const long steps = 1000000;
+  const double h = 2 * M_PI / 500;  // 500 steps per period of the e = 0.21 orbit's scale
+  double exponent = 0, final_error = 0;
+  for (auto _ : state) {
+    const kepler<double> sys(1.0, 1.0);
+    mechcheck::gauss_legendre<kepler<double>, V, 4> gl(sys);
+    mechcheck::phase_state<V> x{V(1, 0), V(0, 1.1)};
+    const double e0 = sys.energy(x.q, x.p);
+    // window w covers steps [2^w, 2^(w+1)): accumulate squared relative errors
+    std::vector<double> sum(25, 0.0), count(25, 0.0);
+    for (long i = 1; i <= steps; ++i) {
+      gl(x, h);
+      const double err = (sys.energy(x.q, x.p) - e0) / std::abs(e0);
+      const int w = static_cast<int>(std::floor(std::log2(static_cast<double>(i))));
+      sum[w] += err * err;
+      count[w] += 1;
+      final_error = std::abs(err);
+    }
+    // fit log(rms) = a + exponent log(t) over windows from 2^8 steps on
+    double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
+    for (int w = 8; w < 25; ++w) {
+      if (count[w] == 0 || sum[w] == 0) continue;
+      const double lt = std::log(std::ldexp(1.5, w)), ly = 0.5 * std::log(sum[w] / count[w]);
+      sx += lt;
+      sy += ly;
+      sxx += lt * lt;
+      sxy += lt * ly;
+      n += 1;
+    }
+    exponent = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  }
+  state.counters["energy_error_exponent"] = exponent;
+  state.counters["final_relative_energy_error"] = final_error;
+}
+BENCHMARK(brouwer)->Name("brouwer/gauss_legendre4/double")->Iterations(1)->Unit(benchmark::kSecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
