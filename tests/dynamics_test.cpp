@@ -10,15 +10,7 @@ namespace {
 using namespace mechcheck;
 using mechcheck::test::near_eps;
 
-template <class F>
-std::string message_of(F&& call) {
-  try {
-    call();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "no exception";
-}
+using mechcheck::test::message_of;
 
 /// L = (qdot_0 + qdot_1)^2 / 2: d2L/dqdot2 = [[1, 1], [1, 1]] is singular.
 struct degenerate_lagrangian {
@@ -144,5 +136,26 @@ TYPED_TEST(gauss_tableau, triple_jump_weights_sum_to_one) {
   }
   EXPECT_EQ(message_of([] { triple_jump_weights<double>(5); }),
             "triple_jump_weights: order must be even and >= 2, got 5");
+}
+}  // namespace
+
+namespace {
+TEST(pair_force_system, force_is_minus_gradient_and_energy_matches_the_model) {
+  using namespace mechcheck;
+  const models::lennard_jones_pair<double> lj{0.5, 0.9};
+  const pair_force_system<double, models::lennard_jones_pair<double>> sys{{1.0, 2.0, 0.5}, lj};
+  const models::particle_system<double, models::lennard_jones_pair<double>> model({1.0, 2.0, 0.5},
+                                                                                  lj);
+  dynamic_vector<double> q(9), p(9), f(9), v(9);
+  q << 0, 0, 0, 1.1, 0.2, -0.1, -0.3, 0.9, 0.4;
+  p << 0.1, -0.2, 0.3, 0.0, 0.5, -0.1, 0.2, 0.2, 0.2;
+  sys.force(q, f);
+  const auto potential = [&model]<class S>(const dynamic_vector<S>& x) -> S { return model.potential(x); };
+  const dynamic_vector<double> grad = gradient(potential, q);
+  for (int i = 0; i < 9; ++i) EXPECT_NEAR(f(i), -grad(i), 64 * std::numeric_limits<double>::epsilon() * grad.norm()) << i;
+  for (int i = 0; i < 9; ++i) v(i) = p(i) / model.masses[i / 3];
+  EXPECT_DOUBLE_EQ(sys.energy(q, p), model.kinetic(v) + model.potential(q));
+  // Pair forces cancel: total force zero to rounding.
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(f(c) + f(3 + c) + f(6 + c), 0.0, 8 * std::numeric_limits<double>::epsilon() * f.norm());
 }
 }  // namespace

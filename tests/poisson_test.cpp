@@ -56,15 +56,7 @@ TYPED_TEST(poisson, bracket_sign_convention_is_eq_269) {
   EXPECT_EQ(poisson_bracket(p_component{0}, q_component{0}, x), T(-1));
 }
 
-template <class F>
-std::string message_of(F&& call) {
-  try {
-    call();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "no exception";
-}
+using mechcheck::test::message_of;
 
 TEST(poisson_errors, function_returning_nan_names_function_and_value) {
   const auto x = point<double>({1.0}, {2.0});

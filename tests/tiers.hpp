@@ -1,5 +1,8 @@
 #pragma once
 // The scalar types unit tests run in: the three law tiers and the reference tier.
+#include <exception>
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "mechcheck/core/precision.hpp"
@@ -14,6 +17,17 @@ class tier_names {
     return std::string(tier_traits<T>::name);
   }
 };
+
+/// The what() of the exception a call throws, or "no exception".
+template <class F>
+std::string message_of(F&& call) {
+  try {
+    call();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "no exception";
+}
 
 /// |a - b| <= k eps(T) max(1, |b|), with a message in eps units.
 template <class T>

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "mechcheck/core.hpp"
+#include "mechcheck/models/particles.hpp"
 #include "mechcheck/poisson/bracket.hpp"
 
 namespace mechcheck {
@@ -168,32 +169,20 @@ struct pair_force_system {
     velocity(p, dq);
     force(q, dp);
   }
+  /// H = sum |p_i|^2 / 2m_i + sum_{i<j} U(|r_i - r_j|): the potential of the same
+  /// N-particle model the Lagrangian laws use.
   template <class Vec>
   typename Vec::Scalar energy(const Vec& q, const Vec& p) const {
     using S = typename Vec::Scalar;
-    using std::sqrt;
-    S e = lift<S>(0);
-    for (Eigen::Index i = 0; i < particles(); ++i) {
-      S p2 = lift<S>(0);
-      for (int c = 0; c < 3; ++c) {
-        const S pc = p(3 * i + c) * p(3 * i + c);
-        p2 += pc;
-      }
-      using R = real_type_t<S>;
-      const S ke = p2 * lift<S>(R(1) / (R(2) * R(masses[i])));
-      e += ke;
-      for (Eigen::Index j = i + 1; j < particles(); ++j) {
-        S r2 = lift<S>(0);
-        for (int c = 0; c < 3; ++c) {
-          const S dc = q(3 * i + c) - q(3 * j + c);
-          const S dc2 = dc * dc;
-          r2 += dc2;
-        }
-        const S u = pair(S(sqrt(r2)));
-        e += u;
-      }
-    }
-    return e;
+    using R = real_type_t<S>;
+    const dynamic_vector<S> qs = q;
+    dynamic_vector<S> velocities(p.size());
+    for (Eigen::Index i = 0; i < p.size(); ++i)
+      velocities(i) = p(i) * lift<S>(R(1) / R(masses[i / 3]));
+    const models::particle_system<T, Pair> model(masses, pair);
+    const S kinetic = model.kinetic(velocities);
+    const S potential = model.potential(qs);
+    return kinetic + potential;
   }
 };
 
