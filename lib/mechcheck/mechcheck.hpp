@@ -8,3 +8,4 @@
 #include "mechcheck/noether.hpp"
 #include "mechcheck/models.hpp"
 #include "mechcheck/integrators.hpp"
+#include "mechcheck/rigid_body.hpp"
