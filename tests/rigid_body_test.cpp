@@ -47,6 +47,9 @@ TEST(inertia_errors, invalid_tensors) {
   M infinite = M::Identity();
   infinite(2, 1) = std::numeric_limits<double>::infinity();
   EXPECT_THROW(validate_inertia(infinite, "check"), non_finite_error);
+  EXPECT_EQ(message_of([&] { principal_axes(infinite); }),
+            "principal_axes: inertia tensor entry (2,1) = inf");
+  EXPECT_THROW(classify(infinite), non_finite_error);
 }
 
 TEST(inertia_errors, valid_tensors_pass_after_a_shift) {

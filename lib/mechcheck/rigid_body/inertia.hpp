@@ -108,6 +108,10 @@ struct principal_frame {
 
 template <class T>
 principal_frame<T> principal_axes(const matrix3<T>& inertia) {
+  for (int k = 0; k < 9; ++k)
+    if (!is_finite(inertia(k / 3, k % 3)))
+      throw non_finite_error("principal_axes: inertia tensor entry (" + std::to_string(k / 3) +
+                             "," + std::to_string(k % 3) + ") = " + to_text(inertia(k / 3, k % 3)));
   const Eigen::SelfAdjointEigenSolver<matrix3<T>> solver(inertia);
   if (solver.info() != Eigen::Success)
     throw convergence_error("principal_axes: the symmetric eigensolver did not converge");
