@@ -46,6 +46,19 @@ void require_finite_state(const phase_state<Vec>& x, const char* where) {
                            "] = " + to_text(x.p(i)));
 }
 
+/// Largest |new - old| and |new| over the components, innermost values (for the
+/// fixed-point iterations of the implicit methods).
+template <class Vec, class Real>
+void track_change(const Vec& next, const Vec& last, Real& change, Real& size) {
+  using std::abs;
+  for (Eigen::Index m = 0; m < next.size(); ++m) {
+    const Real d = abs(innermost_value(next(m)) - innermost_value(last(m)));
+    const Real a = abs(innermost_value(next(m)));
+    change = change > d ? change : d;
+    size = size > a ? size : a;
+  }
+}
+
 /// y += a * v: an Eigen expression for tier scalars (vectorised), element by element for
 /// AD scalars (each product stored before it is added).
 template <class Vec, class S>
@@ -309,7 +322,6 @@ class gauss_legendre {
 
   void operator()(phase_state<Vec>& x, const scalar& h) {
     detail::require_finite_state(x, "gauss_legendre");
-    const Eigen::Index n = x.q.size();
     std::array<Vec, Stages> kq, kp;
     Vec fq = x.q, fp = x.p;
     system_.vector_field(x.q, x.p, fq, fp);
@@ -332,16 +344,8 @@ class gauss_legendre {
           detail::axpy(yp, ha, kp[j]);
         }
         system_.vector_field(yq, yp, nq[i], np[i]);
-        for (Eigen::Index m = 0; m < n; ++m) {
-          using std::abs;
-          const real dq = abs(innermost_value(nq[i](m)) - innermost_value(kq[i](m)));
-          const real dp = abs(innermost_value(np[i](m)) - innermost_value(kp[i](m)));
-          change = change > dq ? change : dq;
-          change = change > dp ? change : dp;
-          const real sq = abs(innermost_value(nq[i](m))), sp = abs(innermost_value(np[i](m)));
-          size = size > sq ? size : sq;
-          size = size > sp ? size : sp;
-        }
+        detail::track_change(nq[i], kq[i], change, size);
+        detail::track_change(np[i], kp[i], change, size);
       }
       kq = nq;
       kp = np;
@@ -365,29 +369,11 @@ class gauss_legendre {
     if (!(compensated_ && x.q == last_q_ && x.p == last_p_)) {
       comp_q_ = x.q;
       comp_p_ = x.p;
-      for (Eigen::Index m = 0; m < n; ++m) {
-        comp_q_(m) = lift<scalar>(0);
-        comp_p_(m) = lift<scalar>(0);
-      }
+      for (Eigen::Index m = 0; m < comp_q_.size(); ++m) comp_q_(m) = lift<scalar>(0);
+      for (Eigen::Index m = 0; m < comp_p_.size(); ++m) comp_p_(m) = lift<scalar>(0);
     }
-    for (Eigen::Index m = 0; m < n; ++m) {
-      scalar incr_q = comp_q_(m), incr_p = comp_p_(m);
-      for (int i = 0; i < Stages; ++i) {
-        const scalar hb = h * lift<scalar>(tableau_.b[i]);
-        const scalar tq = hb * kq[i](m);
-        const scalar tp = hb * kp[i](m);
-        incr_q += tq;
-        incr_p += tp;
-      }
-      const scalar new_q = x.q(m) + incr_q;
-      const scalar new_p = x.p(m) + incr_p;
-      const scalar moved_q = new_q - x.q(m);
-      const scalar moved_p = new_p - x.p(m);
-      comp_q_(m) = incr_q - moved_q;
-      comp_p_(m) = incr_p - moved_p;
-      x.q(m) = new_q;
-      x.p(m) = new_p;
-    }
+    add_compensated(x.q, kq, comp_q_, h);
+    add_compensated(x.p, kp, comp_p_, h);
     last_q_ = x.q;
     last_p_ = x.p;
     compensated_ = !is_ad_v<scalar>;
@@ -396,6 +382,22 @@ class gauss_legendre {
   const gauss_legendre_tableau<real>& tableau() const { return tableau_; }
 
  private:
+  /// y += h sum_i b_i k_i, compensated: comp carries the rounding of the last update.
+  void add_compensated(Vec& y, const std::array<Vec, Stages>& k, Vec& comp, const scalar& h) const {
+    for (Eigen::Index m = 0; m < y.size(); ++m) {
+      scalar incr = comp(m);
+      for (int i = 0; i < Stages; ++i) {
+        const scalar hb = h * lift<scalar>(tableau_.b[i]);
+        const scalar t = hb * k[i](m);
+        incr += t;
+      }
+      const scalar next = y(m) + incr;
+      const scalar moved = next - y(m);
+      comp(m) = incr - moved;
+      y(m) = next;
+    }
+  }
+
   System system_;
   gauss_legendre_tableau<real> tableau_;
   Vec comp_q_, comp_p_, last_q_, last_p_;
