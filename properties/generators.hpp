@@ -378,4 +378,11 @@ dynamic_vector<T> to_tier(const std::vector<double>& v) {
   return out;
 }
 
+/// A 3-vector of coordinates in [-2, 2], drawn inside a property.
+template <class T>
+vector3<T> draw_vector3() {
+  const auto v = *coordinates(3);
+  return vector3<T>(T(v[0]), T(v[1]), T(v[2]));
+}
+
 }  // namespace mechcheck::generators

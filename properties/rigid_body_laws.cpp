@@ -55,12 +55,6 @@ T cloud_scale(const mc::point_cloud<T>& cloud, const vector3<T>& o) {
   return s;
 }
 
-template <class T>
-vector3<T> random_vector() {
-  const auto v = *gen::coordinates(3);
-  return vector3<T>(T(v[0]), T(v[1]), T(v[2]));
-}
-
 struct parallel_axis_theorem {
   static law_info info() {
     return {"rigid.parallel_axis",
@@ -72,7 +66,7 @@ struct parallel_axis_theorem {
   template <class T>
   static void property() {
     const auto cloud = random_cloud<T>();
-    const vector3<T> b = random_vector<T>();
+    const vector3<T> b = gen::draw_vector3<T>();
     const vector3<T> c = mc::centre_of_mass(cloud);
     const T m = cloud.total_mass();
     const matrix3<T> about_centre = mc::inertia_tensor(cloud, c);
@@ -100,7 +94,7 @@ struct trace_minimal_at_centre {
   template <class T>
   static void property() {
     const auto cloud = random_cloud<T>();
-    const vector3<T> b = random_vector<T>();
+    const vector3<T> b = gen::draw_vector3<T>();
     const vector3<T> c = mc::centre_of_mass(cloud);
     const T tc = mc::inertia_tensor(cloud, c).trace();
     const T tb = mc::inertia_tensor(cloud, vector3<T>(c + b)).trace();
@@ -157,7 +151,7 @@ struct tetrahedron_tensor {
   static void property() {
     const T m = T(*gen::positive());
     std::array<vector3<T>, 4> v;
-    for (auto& x : v) x = random_vector<T>();
+    for (auto& x : v) x = gen::draw_vector3<T>();
     const vector3<T> e1 = v[1] - v[0], e2 = v[2] - v[0], e3 = v[3] - v[0];
     using std::abs;
     RC_PRE(abs(T(e1.cross(e2).dot(e3))) > T(1) / 64);  // not flat
@@ -180,7 +174,7 @@ struct triangle_inequality {
   template <class T>
   static void property() {
     const auto cloud = random_cloud<T>();
-    const vector3<T> o = random_vector<T>();
+    const vector3<T> o = gen::draw_vector3<T>();
     const matrix3<T> inertia = mc::inertia_tensor(cloud, o);
     const vector3<T> mom = mc::principal_axes(inertia).moments;
     const T scale = cloud_scale(cloud, o);
@@ -247,7 +241,7 @@ struct symmetry_axis_is_principal {
   template <class T>
   static void property() {
     const auto base = random_cloud<T>();
-    const vector3<T> n = random_vector<T>();
+    const vector3<T> n = gen::draw_vector3<T>();
     RC_PRE(n.norm() > T(1) / 4);
     const vector3<T> axis = n.normalized();
     using std::cos;
@@ -307,7 +301,7 @@ struct rigid_kinematics {
   template <class T>
   static void property() {
     const auto cloud = random_cloud<T>();
-    const vector3<T> big_v = random_vector<T>(), omega = random_vector<T>(), a = random_vector<T>();
+    const vector3<T> big_v = gen::draw_vector3<T>(), omega = gen::draw_vector3<T>(), a = gen::draw_vector3<T>();
     const vector3<T> c = mc::centre_of_mass(cloud);
     const std::size_t n = cloud.masses.size();
     // velocities of the points, from the centre of mass as reference

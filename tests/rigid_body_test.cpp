@@ -61,4 +61,50 @@ TEST(inertia_errors, valid_tensors_pass_after_a_shift) {
   EXPECT_EQ(classify(reference::solid_cylinder_inertia(1.0, 2.0, 1.0)), top_kind::symmetric);
   EXPECT_EQ(classify(reference::box_inertia(1.0, 1.0, 2.0, 3.0)), top_kind::asymmetric);
 }
+
+
+TEST(top_errors, free_body_moments) {
+  EXPECT_EQ(message_of([] { free_rigid_body<double>(V(1, 0, 1)); }),
+            "free_rigid_body: principal moment I2 must be positive and finite, got 0");
+  EXPECT_EQ(message_of([] { free_rigid_body<double>(V(1, 2, 3.5)); }),
+            "free_rigid_body: principal moments violate the triangle inequality I1 + I2 >= I3: "
+            "1 + 2 < 3.5");
+  const free_rigid_body<double> body(V(1, 2, 2.5));
+  dynamic_vector<double> q(3), p(4), dq(3), dp(4);
+  q.setZero();
+  p.setZero();
+  EXPECT_EQ(message_of([&] { body.vector_field(q, p, dq, dp); }),
+            "free_rigid_body: the state is M (3 components) and the rows of R (9, or none), "
+            "got 3 and 4");
+}
+
+TEST(top_errors, heavy_top) {
+  EXPECT_EQ(message_of([] { heavy_top<double>(-1, 1, 1); }),
+            "heavy_top: I1 must be positive and finite, got -1");
+  const heavy_top<double> top(1, 0.5, 1);
+  EXPECT_EQ(message_of([&] { top.steady_precession_rates(0.5, 1); }),
+            "heavy_top::steady_precession_rates: Omega_3 = 1 is below the minimum spin for "
+            "theta = 0.5 (discriminant -3.260330247561491)");  // 0.5^2 - 4 cos(0.5)
+  EXPECT_THROW(top.minimum_spin(2.0), domain_error);  // hanging below the pivot
+  EXPECT_THROW(top.nutation_from_turning_point(0.0, 1.0, 2.0), domain_error);
+  EXPECT_THROW(heavy_top<double>(1, 1, 0).nutation_from_turning_point(0.5, 1.0, 2.0),
+               domain_error);
+}
+
+TEST(top_errors, asymmetric_reference) {
+  EXPECT_EQ(message_of([] { reference::asymmetric_top_angular_velocity(V(1, 1, 1.5), V(1, 1, 1), 0.0); }),
+            "asymmetric_top_angular_velocity: need 0 < I1 < I2 < I3, got (1, 1, 1.5)");
+  // M^2 = 2 E I2 exactly: Omega = (3, 0, 1) with I = (2, 3, 6): M^2 = 72, 2E = 24.
+  EXPECT_EQ(message_of([] { reference::asymmetric_top_angular_velocity(V(2, 3, 6), V(3, 0, 1), 0.0); }),
+            "asymmetric_top_angular_velocity: M^2 = 2 E I2 (the separatrix)");
+}
+
+// Boost.Math's jacobi_elliptic returns a wrong dn at the quarter period; the reference
+// takes dn from sn. Omega(0) with Omega_1 = 0 puts the phase exactly there.
+TEST(top_reference, quarter_period_phase) {
+  const V moments(0.625, 0.75, 0.875);
+  const V omega0(0, 1.0 / 192, 1.0 / 224);
+  const V at_zero = reference::asymmetric_top_angular_velocity(moments, omega0, 0.0);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(at_zero(i), omega0(i), 4e-18) << i;
+}
 }  // namespace

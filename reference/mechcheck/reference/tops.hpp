@@ -1,0 +1,113 @@
+#pragma once
+/// Exact solutions of the free rigid body (notes lectures 17-19), in any precision.
+
+#include <cmath>
+#include <string>
+
+#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/jacobi_elliptic.hpp>
+
+#include "mechcheck/core.hpp"
+#include "mechcheck/rigid_body.hpp"
+
+namespace mechcheck::reference {
+
+/// Free symmetric top I1 = I2 with the lab Z axis along M (eqs 176-188, 216-227): theta is
+/// constant, phi turns at M / I1 (eq 224) and psi at M3/I3 - M3/I1 = -omega (eq 226;
+/// eq 227 prints +omega), omega = Omega_3 (I3 - I1) / I1 being the rate at which Omega
+/// turns about x_3 in the body (eqs 179-184). The attitude at time t is
+/// R(phi0 + t M / I1, theta0, psi0 - omega t) (eq 208).
+template <class T>
+struct free_symmetric_top {
+  T i1, i3, momentum;  ///< I1 = I2, I3, |M|
+  T phi0, theta0, psi0;
+
+  T omega3() const {
+    using std::cos;
+    return momentum * cos(theta0) / i3;  // M_3 = M cos theta (eq 225)
+  }
+  T precession_rate() const { return momentum / i1; }                  // eqs 188, 224
+  T body_frequency() const { return omega3() * (i3 - i1) / i1; }      // omega, eq 179
+  T spin_rate() const { return omega3() * (i1 - i3) / i1; }            // psidot, eq 226
+  /// Body components of M: M times the third column of R, i.e. R (0, 0, M).
+  vector3<T> body_momentum() const {
+    return euler_rotation(phi0, theta0, psi0) * vector3<T>(T(0), T(0), momentum);
+  }
+  matrix3<T> attitude(const T& t) const {
+    return euler_rotation(T(phi0 + precession_rate() * t), theta0, T(psi0 + spin_rate() * t));
+  }
+};
+
+/// Body angular velocity of a free asymmetric top at time t from Omega(0), by Jacobi
+/// elliptic functions (Landau & Lifshitz, Mechanics, section 37). For I1 < I2 < I3 and
+/// M^2 > 2 E I2:
+///   Omega_1 = A cn(tau), Omega_2 = B sn(tau), Omega_3 = C dn(tau),
+///   A^2 = (2 E I3 - M^2) / (I1 (I3 - I1)),  B^2 = (2 E I3 - M^2) / (I2 (I3 - I2)),
+///   C^2 = (M^2 - 2 E I1) / (I3 (I3 - I1)),
+///   tau = lambda (t + t0), lambda^2 = (I3 - I2)(M^2 - 2 E I1) / (I1 I2 I3),
+///   k^2 = (I2 - I1)(2 E I3 - M^2) / ((I3 - I2)(M^2 - 2 E I1)).
+/// The other cases follow from symmetries of Euler's equations: a half turn about axis 1
+/// (Omega_2, Omega_3 -> -Omega_2, -Omega_3) makes Omega_3 > 0; exchanging axes 1 and 3
+/// (an odd permutation, which reverses the flow) covers M^2 < 2 E I2: the formulas with
+/// I1 and I3 exchanged are consistent for the reversed flow (A lambda I1 = (I3 - I2) B C
+/// changes sign), so the two reversals cancel. The phase t0 is F(am, k) with
+/// am = atan2(sn, cn) at t = 0. Throws domain_error for moments not strictly ordered or
+/// on the separatrix M^2 = 2 E I2 (k = 1).
+template <class T>
+vector3<T> asymmetric_top_angular_velocity(const vector3<T>& moments, const vector3<T>& omega0,
+                                           const T& t) {
+  using std::atan2;
+  using std::sqrt;
+  if (!(moments(0) > 0 && moments(0) < moments(1) && moments(1) < moments(2)))
+    throw domain_error("asymmetric_top_angular_velocity: need 0 < I1 < I2 < I3, got " +
+                       to_text(moments));
+  vector3<T> m = moments.cwiseProduct(omega0);
+  const T m2 = m.squaredNorm();
+  const T two_e = omega0.dot(m);
+  const T pivot = m2 - two_e * moments(1);
+  if (pivot == 0)
+    throw domain_error("asymmetric_top_angular_velocity: M^2 = 2 E I2 (the separatrix)");
+  // Reduce to M^2 > 2 E I2 (exchange axes 1 and 3) and Omega_3 > 0.
+  const bool exchanged = pivot < 0;
+  vector3<T> in = moments, w = omega0;
+  if (exchanged) {
+    in = vector3<T>(moments(2), moments(1), moments(0));
+    w = vector3<T>(omega0(2), omega0(1), omega0(0));
+  }
+  const bool turned = w(2) < 0;
+  if (turned) w = vector3<T>(w(0), -w(1), -w(2));
+  const T i1 = in(0), i2 = in(1), i3 = in(2);
+  // Differences of the form 2 E I_a - M^2 = sum_j I_j (I_a - I_j) Omega_j^2, exactly
+  // non-negative, with no cancellation between 2 E I_a and M^2.
+  const auto excess = [&](const T& ia) {
+    T s = 0;
+    for (int j = 0; j < 3; ++j) s += in(j) * (ia - in(j)) * w(j) * w(j);
+    return s;
+  };
+  const T top = excess(i3);     // 2 E I3 - M^2
+  const T bottom = -excess(i1); // M^2 - 2 E I1, of the same sign
+  const T a = sqrt(top / (i1 * (i3 - i1))), b = sqrt(top / (i2 * (i3 - i2)));
+  const T c = sqrt(bottom / (i3 * (i3 - i1)));
+  const T lambda = sqrt((i3 - i2) * bottom / (i1 * i2 * i3));
+  const T k2 = (i2 - i1) * top / ((i3 - i2) * bottom);
+  if (!(k2 < 1))
+    throw domain_error("asymmetric_top_angular_velocity: modulus^2 = " + to_text(k2) +
+                       " is not below 1 (on the separatrix)");
+  const T k = sqrt(k2);
+  // Phase: sn = Omega_2 / B, cn = Omega_1 / A at t = 0 (A = B = 0 is the steady spin;
+  // 2 E I3 - M^2 is negative in the exchanged frame).
+  T tau0 = 0;
+  if (top != 0) tau0 = boost::math::ellint_1(k, T(atan2(w(1) / b, w(0) / a)));
+  T cn, dn_boost;
+  const T sn = boost::math::jacobi_elliptic(k, T(tau0 + lambda * t), &cn, &dn_boost);
+  // dn from sn: Boost.Math's dn is wrong near the quarter period (measured in 1.83:
+  // dn(K(1/2), 1/2) off by 2e-3 in double); 1 - k^2 sn^2 >= 1 - k^2 > 0 is well
+  // conditioned.
+  const T dn = sqrt(T(1 - k2 * sn * sn));
+  vector3<T> out(a * cn, b * sn, c * dn);
+  if (turned) out = vector3<T>(out(0), -out(1), -out(2));
+  if (exchanged) out = vector3<T>(out(2), out(1), out(0));
+  return out;
+}
+
+}  // namespace mechcheck::reference
