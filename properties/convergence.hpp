@@ -36,6 +36,13 @@ std::optional<T> converged_exponent(Error&& error, T h, int p, const T& floor_sc
   return T(log2(e1 / error(T(h / 2))));
 }
 
+/// Number of steps of size h in a unit of time (h from a halving study: 1/h is whole).
+template <class T>
+long steps_for(const T& h) {
+  using std::round;
+  return static_cast<long>(static_cast<double>(round(T(1 / h))));
+}
+
 /// Check a fitted exponent, or classify the case as below the tier's rounding floor.
 template <class T>
 void check_exponent(const std::string& what, const std::optional<T>& fitted, int expected) {

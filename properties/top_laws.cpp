@@ -28,6 +28,7 @@ using mc::harness::check_zero;
 using mc::harness::law_info;
 using mc::properties::check_exponent;
 using mc::properties::converged_exponent;
+using mc::properties::steps_for;
 
 template <class T>
 using body_stepper = mc::gauss_legendre<mc::free_rigid_body<T>, dynamic_vector<T>, 4>;
@@ -70,13 +71,6 @@ mc::phase_state<dynamic_vector<T>> free_motion(const mc::free_rigid_body<T>& bod
   body_stepper<T> step{body};
   mc::integrate(step, x, T(t_end / steps), steps);
   return x;
-}
-
-/// Steps for a step size h over a unit time.
-template <class T>
-long steps_for(const T& h) {
-  using std::round;
-  return static_cast<long>(static_cast<double>(round(T(1 / h))));
 }
 
 struct euler_equations {

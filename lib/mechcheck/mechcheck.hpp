@@ -9,3 +9,4 @@
 #include "mechcheck/models.hpp"
 #include "mechcheck/integrators.hpp"
 #include "mechcheck/rigid_body.hpp"
+#include "mechcheck/central.hpp"

@@ -30,6 +30,10 @@ template <class T>
 using dynamic_vector = Eigen::Matrix<T, Eigen::Dynamic, 1>;
 template <class T>
 using dynamic_matrix = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
+template <class T>
+using vector3 = Eigen::Matrix<T, 3, 1>;
+template <class T>
+using matrix3 = Eigen::Matrix<T, 3, 3>;
 
 /// AD scalar over T with a dynamic number of directions.
 template <class T>

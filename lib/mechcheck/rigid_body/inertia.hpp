@@ -11,11 +11,6 @@
 
 namespace mechcheck {
 
-template <class T>
-using vector3 = Eigen::Matrix<T, 3, 1>;
-template <class T>
-using matrix3 = Eigen::Matrix<T, 3, 3>;
-
 /// Point masses m_a at positions r_a.
 template <class T>
 struct point_cloud {
