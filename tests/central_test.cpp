@@ -113,7 +113,7 @@ std::pair<dynamic_vector<T>, dynamic_vector<T>> integrated(const kepler_constant
 // Gauss-Legendre 8 (order 16) with h = 1/1024 over t in [0, 1/8] has a truncation error
 // near 1e-45 relative; the analytic orbit (elements, Kepler's equation, state) must agree
 // to >= 40 digits, from pericentre, apocentre and a generic point of orbits with
-// e = 0.1, 0.5, 0.9, and of a hyperbola.
+// e = 0.1, 0.5, 0.9, and of a hyperbola; and the LRL vector is conserved as well.
 TEST(kepler_reference, agrees_with_integration_to_40_digits) {
   using T = mpfr50;
   const kepler_constants<T> c(T(3) / 2, T(5) / 4);
@@ -131,6 +131,10 @@ TEST(kepler_reference, agrees_with_integration_to_40_digits) {
       const T digits_v = -log10(T((p / c.mu - dynamic_vector<T>(v1)).norm() / v1.norm()));
       EXPECT_GE(digits_r, 40) << "e = " << e << ", nu = " << nu;
       EXPECT_GE(digits_v, 40) << "e = " << e << ", nu = " << nu;
+      // The LRL vector of eq 77 along the integration: conserved to the same digits.
+      const dynamic_vector<T> q0(r0), p0(dynamic_vector<T>(c.mu * v0));
+      const vector3<T> a0 = lrl_vector(q0, p0, c.mu, c.k), a1 = lrl_vector(q, p, c.mu, c.k);
+      EXPECT_GE(T(-log10(T((a1 - a0).norm() / (c.mu * c.k)))), 40) << "e = " << e;
     }
   }
 }
