@@ -419,8 +419,11 @@ struct bertrand {
       using std::abs;
       return T(abs(T(orbit.apsidal_angle() - limit)));
     };
+    // Rounding floor: near the turning points E - U_eff is a difference of two terms each
+    // 1/eps times larger, so Delta phi carries ~ 2 pi eps_tier / eps; over the six
+    // halvings eps >= 1/512: floor scale 2 pi 512.
     check_exponent("Delta phi - 2 pi/sqrt(n + 2) in eps: fitted order",
-                   converged_exponent(error, T(1) / 8, 2, T(1e4)), 2);
+                   converged_exponent(error, T(1) / 8, 2, T(2 * pi<T>() * 512)), 2);
   }
 };
 MECHCHECK_LAW(bertrand);

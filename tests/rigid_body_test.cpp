@@ -1,4 +1,5 @@
 // Inertia tensors: typed errors on bad input, messages included.
+#include <cmath>
 #include <limits>
 
 #include <gtest/gtest.h>
@@ -89,11 +90,15 @@ TEST(top_errors, heavy_top) {
   EXPECT_THROW(top.nutation_from_turning_point(0.0, 1.0, 2.0), domain_error);
   EXPECT_THROW(heavy_top<double>(1, 1, 0).nutation_from_turning_point(0.5, 1.0, 2.0),
                domain_error);
+  EXPECT_EQ(message_of([&] { top.nutation_from_turning_point(0.5, std::nan(""), 2.0); }),
+            "heavy_top::nutation_from_turning_point: theta0 = 0.5, phidot0 = nan, Omega_3 = 2");
 }
 
 TEST(top_errors, asymmetric_reference) {
   EXPECT_EQ(message_of([] { reference::asymmetric_top_angular_velocity(V(1, 1, 1.5), V(1, 1, 1), 0.0); }),
             "asymmetric_top_angular_velocity: need 0 < I1 < I2 < I3, got (1, 1, 1.5)");
+  EXPECT_THROW(reference::asymmetric_top_angular_velocity(V(1, 2, 2.5), V(1, std::nan(""), 1), 0.0),
+               non_finite_error);
   // M^2 = 2 E I2 exactly: Omega = (3, 0, 1) with I = (2, 3, 6): M^2 = 72, 2E = 24.
   EXPECT_EQ(message_of([] { reference::asymmetric_top_angular_velocity(V(2, 3, 6), V(3, 0, 1), 0.0); }),
             "asymmetric_top_angular_velocity: M^2 = 2 E I2 (the separatrix)");

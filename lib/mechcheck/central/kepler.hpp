@@ -106,13 +106,8 @@ vector3<S> lrl_vector(const dynamic_vector<S>& q, const dynamic_vector<S>& p, co
                           std::to_string(q.size()));
   using std::sqrt;
   using R = real_type_t<S>;
-  const auto cross = [](const auto& a, const auto& b, int i) {
-    const int j = (i + 1) % 3, l = (i + 2) % 3;
-    const S ab = a(j) * b(l), ba = a(l) * b(j);
-    return S(ab - ba);
-  };
   vector3<S> m;
-  for (int i = 0; i < 3; ++i) m(i) = cross(q, p, i);
+  for (int i = 0; i < 3; ++i) m(i) = cross_component(q, p, i);
   S r2 = lift<S>(0);
   for (int i = 0; i < 3; ++i) {
     const S qi2 = q(i) * q(i);
@@ -122,7 +117,7 @@ vector3<S> lrl_vector(const dynamic_vector<S>& q, const dynamic_vector<S>& p, co
   const S strength = lift<S>(R(mu) * R(k));
   vector3<S> a;
   for (int i = 0; i < 3; ++i) {
-    const S pm = cross(p, m, i);
+    const S pm = cross_component(p, m, i);
     const S radial = strength * q(i);
     const S term = radial * inv_r;
     a(i) = pm - term;

@@ -121,6 +121,17 @@ S half() {
   return lift<S>(R(1) / R(2));
 }
 
+/// Component i of the cross product a x b, eps_ijk a_j b_k, for any indexable 3-vectors
+/// (fixed or dynamic) of any scalar, each product named (the AD rules above).
+template <class A, class B>
+typename A::Scalar cross_component(const A& a, const B& b, int i) {
+  using S = typename A::Scalar;
+  static_assert(std::is_same_v<S, typename B::Scalar>, "cross_component: one scalar type");
+  const int j = (i + 1) % 3, k = (i + 2) % 3;
+  const S ajbk = a(j) * b(k), akbj = a(k) * b(j);
+  return S(ajbk - akbj);
+}
+
 /// The value of x with every AD layer stripped.
 template <class T>
 real_type_t<T> innermost_value(const T& x) {

@@ -48,8 +48,7 @@ struct angular_momentum {
   template <class S>
   S operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& p) const {
     detail::require_three_dof(q, "angular_momentum");
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    return q(j) * p(k) - q(k) * p(j);
+    return cross_component(q, p, i);
   }
 };
 

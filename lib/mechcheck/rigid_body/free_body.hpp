@@ -84,16 +84,11 @@ struct free_rigid_body {
     return kinetic_energy(vector3<S>(q(0), q(1), q(2)));
   }
 
-  /// a x b, each product named (AD scalars).
+  /// a x b for any scalar (AD included).
   template <class S>
   static vector3<S> cross(const vector3<S>& a, const vector3<S>& b) {
-    vector3<S> c;
-    for (int i = 0; i < 3; ++i) {
-      const int j = (i + 1) % 3, k = (i + 2) % 3;
-      const S ajbk = a(j) * b(k), akbj = a(k) * b(j);
-      c(i) = ajbk - akbj;
-    }
-    return c;
+    return vector3<S>(cross_component(a, b, 0), cross_component(a, b, 1),
+                      cross_component(a, b, 2));
   }
 
  private:

@@ -208,13 +208,18 @@ struct heavy_top {
   }
 
   /// Nutation from a turning point: theta(0) = theta0, thetadot(0) = 0, with phidot(0)
-  /// and spin Omega_3. Throws domain_error for mgl = 0 (no cubic) or sin theta0 = 0.
+  /// and spin Omega_3. Throws domain_error for mgl = 0 (no cubic) or sin theta0 = 0,
+  /// non_finite_error for non-finite input.
   nutation<T> nutation_from_turning_point(const T& theta0, const T& phidot0,
                                           const T& omega3) const {
     using std::abs;
     using std::cos;
     using std::sin;
     using std::sqrt;
+    if (!is_finite(theta0) || !is_finite(phidot0) || !is_finite(omega3))
+      throw non_finite_error("heavy_top::nutation_from_turning_point: theta0 = " +
+                             to_text(theta0) + ", phidot0 = " + to_text(phidot0) +
+                             ", Omega_3 = " + to_text(omega3));
     if (mgl == 0) throw domain_error("heavy_top::nutation_from_turning_point: mgl = 0");
     const T u0 = cos(theta0), s2 = 1 - u0 * u0;
     if (!(s2 > 0) || sin(theta0) == 0)
@@ -239,6 +244,12 @@ struct heavy_top {
     const T spread = mgl > 0 ? outside - low : high - outside;
     const T k = sqrt(k2 < 0 ? T(0) : k2);
     const T period = 4 * boost::math::ellint_1(k) / sqrt(abs(beta) * spread);
+    // disc > 0 always (one root of the quadratic lies beyond +-1, the other in [-1, 1]);
+    // rounding cannot make it negative unless the input overflows.
+    if (!is_finite(period))
+      throw non_finite_error("heavy_top::nutation_from_turning_point: period " +
+                             to_text(period) + " (discriminant " + to_text(disc) +
+                             ") at theta0 = " + to_text(theta0));
     return {low, high, outside, period};
   }
 };

@@ -52,7 +52,7 @@ struct free_symmetric_top {
 /// I1 and I3 exchanged are consistent for the reversed flow (A lambda I1 = (I3 - I2) B C
 /// changes sign), so the two reversals cancel. The phase t0 is F(am, k) with
 /// am = atan2(sn, cn) at t = 0. Throws domain_error for moments not strictly ordered or
-/// on the separatrix M^2 = 2 E I2 (k = 1).
+/// on the separatrix M^2 = 2 E I2 (k = 1), non_finite_error for non-finite input.
 template <class T>
 vector3<T> asymmetric_top_angular_velocity(const vector3<T>& moments, const vector3<T>& omega0,
                                            const T& t) {
@@ -61,6 +61,11 @@ vector3<T> asymmetric_top_angular_velocity(const vector3<T>& moments, const vect
   if (!(moments(0) > 0 && moments(0) < moments(1) && moments(1) < moments(2)))
     throw domain_error("asymmetric_top_angular_velocity: need 0 < I1 < I2 < I3, got " +
                        to_text(moments));
+  for (int i = 0; i < 3; ++i)
+    if (!is_finite(omega0(i)) || !is_finite(moments(i)))
+      throw non_finite_error("asymmetric_top_angular_velocity: I = " + to_text(moments) +
+                             ", Omega(0) = " + to_text(omega0));
+  if (!is_finite(t)) throw non_finite_error("asymmetric_top_angular_velocity: t = " + to_text(t));
   vector3<T> m = moments.cwiseProduct(omega0);
   const T m2 = m.squaredNorm();
   const T two_e = omega0.dot(m);
