@@ -279,10 +279,16 @@ struct verlet_momenta {
   }
   // Each step adds rounding of the N-term force sums and of the kicks and drifts to P
   // and M: k = 8 N per step, over the steps taken, against sum |p_i| (sum |r_i||p_i|).
+  // Domain: motions that exist for the 100 steps. U = c r^3 with c < 0 pushes the
+  // particles apart with a force growing as r^2, so r'' ~ r^2 reaches infinity in finite
+  // time (light particles within t = 100/256: the step then overflows, and reports it);
+  // there is no motion left whose momenta could be conserved, so those are not drawn.
   template <class T>
   static void property() {
     const auto s = *gen::particle_samples(2, 4);
-    const auto u = *gen::pair_potentials();
+    const auto u = *rc::gen::suchThat(gen::pair_potentials(), [](const gen::pair_potential& v) {
+      return !(v.kind == gen::pair_potential::shape::power_law && v.k > 2 && v.a < 0);
+    });
     const mc::pair_force_system<T, gen::pair_potential> sys{s.template tier_masses<T>(), u};
     dynamic_vector<T> q = s.template positions<T>(), v = s.template velocities<T>(), p(v.size());
     for (Eigen::Index i = 0; i < v.size(); ++i) p(i) = T(s.masses[i / 3]) * v(i);

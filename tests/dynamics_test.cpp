@@ -64,6 +64,41 @@ TEST(dynamics_errors, steppers_reject_non_finite_state) {
             "kepler_system: k must be positive and finite, got -1");
 }
 
+TEST(dynamics_errors, a_step_that_overflows_says_so_and_leaves_the_state) {
+  // Two particles 2 apart in U = -r^3 with h = 1: the kick 3 r^2 h / m is finite, but
+  // |r|^2 of the drifted pair overflows double in the second kick's force.
+  using V = dynamic_vector<double>;
+  const pair_force_system<double, models::power_law_pair<double>> sys{{1e-300, 1e-300},
+                                                                      {-1.0, 3}};
+  stormer_verlet<decltype(sys), V> verlet(sys);
+  V q(6), p(6);
+  q << -1, 0, 0, 1, 0, 0;
+  p << 0, 0, 0, 0, 0, 0;
+  phase_state<V> x{q, p};
+  EXPECT_THROW(verlet(x, 1.0), non_finite_error);
+  EXPECT_EQ(x.q, q);
+  EXPECT_EQ(x.p, p);
+  const std::string m = message_of([&] { verlet(x, 1.0); });
+  EXPECT_EQ(m.rfind("stormer_verlet: the step of h = 1 from q = (-1, 0, 0, 1, 0, 0), p = (0, 0, "
+                    "0, 0, 0, 0) produced ", 0),
+            0u)
+      << m;
+}
+
+TEST(dynamics_errors, steps_must_be_finite_and_non_zero) {
+  using V = Eigen::Vector2d;
+  const kepler_system<double> kepler(1.0, 1.0);
+  rk4<kepler_system<double>, V> method{kepler};
+  phase_state<V> x{V(1, 0), V(0, 1)};
+  EXPECT_EQ(message_of([&] { method(x, 0.0); }), "rk4: step h must be non-zero, got 0");
+  EXPECT_THROW(method(x, std::numeric_limits<double>::infinity()), non_finite_error);
+  EXPECT_EQ(message_of([&] { method(x, std::numeric_limits<double>::quiet_NaN()); }),
+            "rk4: step h must be finite, got nan");
+  EXPECT_EQ(x.q, V(1, 0));
+  method(x, -0.1);  // backwards in time is a step
+  EXPECT_LT(x.q(1), 0);
+}
+
 TEST(dynamics_errors, implicit_step_that_cannot_converge) {
   // A stiff pendulum (w = 1000) with h = 1: the fixed-point iteration's contraction
   // factor is about h w >> 1, so it cannot converge, and the step says so.

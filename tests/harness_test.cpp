@@ -57,6 +57,30 @@ TEST(harness_selftest, wrong_law_fails_with_shrunk_counterexample_and_reproduce_
             std::string::npos)
       << r.reproduce;
   EXPECT_NE(r.message.find("{M_1,M_2}: computed"), std::string::npos) << r.message;
+  // The failing case is counted: max and RMS are over the same cases, so max >= RMS > 0.
+  EXPECT_GT(r.max_residual_eps, 1e10);
+  EXPECT_GE(r.max_residual_eps, r.rms_residual_eps);
+}
+
+/// Throws a foreign exception for some drawn values, after recording residuals.
+struct throws_after_passing {
+  static law_info info() { return {"selftest.throws", "throws for x > 1", {"1"}}; }
+  template <class T>
+  static void property() {
+    const double x = *gen::coordinate();
+    const T half = T(1) / 2;
+    check_close("a residual", T(1 + half * tier_epsilon<T>()), T(1), T(1), 1);
+    if (x > 1) throw std::runtime_error("boom");
+  }
+};
+
+TEST(harness_selftest, a_row_failed_by_an_exception_keeps_max_above_rms) {
+  run_config config;
+  const law_result r = run_law<throws_after_passing, double>(config);
+  EXPECT_FALSE(r.passed);
+  EXPECT_NE(r.message.find("boom"), std::string::npos) << r.message;
+  EXPECT_GT(r.cases, 1);
+  EXPECT_GE(r.max_residual_eps, r.rms_residual_eps);
 }
 
 TEST(harness_selftest, wrong_law_fails_in_every_tier_with_the_same_counterexample) {

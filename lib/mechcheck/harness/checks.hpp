@@ -31,13 +31,14 @@ class recorder {
       worst_ = case_what_;
     }
   }
-  /// After the first failing case RapidCheck shrinks: those reruns are not counted.
+  /// The first failing case counts as a case (with the residuals it recorded before it
+  /// failed; none when it failed by an exception); RapidCheck then shrinks, and those
+  /// reruns are not counted.
   void freeze() {
-    if (!frozen_) failing_case_max_ = case_max_;
+    if (frozen_) return;
+    end_case();
     frozen_ = true;
   }
-  /// Worst residual of the first failing case (before shrinking), in eps * scale.
-  double failing_case_max() const { return failing_case_max_; }
   void observe(double residual_eps, double budget_eps, const std::string& what) {
     if (frozen_) return;
     if (!(residual_eps <= case_max_)) {  // also takes NaN
@@ -56,7 +57,7 @@ class recorder {
  private:
   bool frozen_ = false;
   int cases_ = 0;
-  double case_max_ = 0, max_ = 0, sum_sq_ = 0, budget_ = 0, failing_case_max_ = 0;
+  double case_max_ = 0, max_ = 0, sum_sq_ = 0, budget_ = 0;
   std::string case_what_, worst_;
 };
 

@@ -110,14 +110,11 @@ law_result make_result(const law_info& info, const std::string& tier, int digits
     for (const auto& [type, value] : f.counterExample) ce << value << "\n";
     r.counterexample = ce.str();
     const std::string description = strip_assertion_location(f.description);
-    // A failing row reports the residual of its first failing case, whose size is the
-    // evidence (for an erratum, of the misprint).
-    r.max_residual_eps = rec.failing_case_max();
+    // The counts include the first failing case (before shrinking): max and RMS are over
+    // the same cases, and its residual, the evidence (for an erratum, of the misprint),
+    // is in both.
     r.worst_check = description;
-    if (!expect_hold) {
-      r.cases = f.numSuccess + 1;
-      r.rms_residual_eps = 0;
-    } else {
+    if (expect_hold) {
       msg << "law " << info.id << " fails in tier " << tier << " after " << f.numSuccess
           << " passing cases.\n"
           << description << "\n"

@@ -46,6 +46,35 @@ void require_finite_state(const phase_state<Vec>& x, const char* where) {
                            "] = " + to_text(x.p(i)));
 }
 
+/// Checks the step h: finite and non-zero (a negative h steps backwards in time).
+template <class S>
+void require_step(const S& h, const char* where) {
+  if (!is_finite(h))
+    throw non_finite_error(std::string(where) + ": step h must be finite, got " + to_text(h));
+  if (h == 0) throw domain_error(std::string(where) + ": step h must be non-zero, got 0");
+}
+
+/// One guarded step: checks the state and h, runs body(x), and checks that the state it
+/// leaves is finite. A step that overflows (a force blowing up, h far too large) throws
+/// non_finite_error from that step, naming h and the state it started from, and leaves
+/// x exactly as it was.
+template <class Vec, class Body>
+void guarded_step(phase_state<Vec>& x, const typename Vec::Scalar& h, const char* where,
+                  Body&& body) {
+  require_finite_state(x, where);
+  require_step(h, where);
+  const phase_state<Vec> start = x;
+  body(x);
+  const auto bad_q = first_non_finite(x.q), bad_p = first_non_finite(x.p);
+  if (bad_q < 0 && bad_p < 0) [[likely]]
+    return;
+  const std::string what = bad_q >= 0 ? "q[" + std::to_string(bad_q) + "] = " + to_text(x.q(bad_q))
+                                      : "p[" + std::to_string(bad_p) + "] = " + to_text(x.p(bad_p));
+  x = start;
+  throw non_finite_error(std::string(where) + ": the step of h = " + to_text(h) + " from q = " +
+                         to_text(start.q) + ", p = " + to_text(start.p) + " produced " + what);
+}
+
 /// Largest |new - old| and |new| over the components, innermost values (for the
 /// fixed-point iterations of the implicit methods).
 template <class Vec, class Real>
@@ -108,11 +137,12 @@ struct explicit_euler {
   static constexpr bool symplectic = false;
   System system;
   void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) const {
-    detail::require_finite_state(x, "explicit_euler");
-    Vec dq = x.q, dp = x.p;
-    system.vector_field(x.q, x.p, dq, dp);
-    detail::axpy(x.q, h, dq);
-    detail::axpy(x.p, h, dp);
+    detail::guarded_step(x, h, "explicit_euler", [&](phase_state<Vec>& y) {
+      Vec dq = y.q, dp = y.p;
+      system.vector_field(y.q, y.p, dq, dp);
+      detail::axpy(y.q, h, dq);
+      detail::axpy(y.p, h, dp);
+    });
   }
 };
 
@@ -123,8 +153,12 @@ struct rk4 {
   static constexpr bool symplectic = false;
   System system;
   void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) const {
+    detail::guarded_step(x, h, "rk4", [&](phase_state<Vec>& y) { step(y, h); });
+  }
+
+ private:
+  void step(phase_state<Vec>& x, const typename Vec::Scalar& h) const {
     using S = typename Vec::Scalar;
-    detail::require_finite_state(x, "rk4");
     const S half_h = h * half<S>();
     const S sixth_h = h * lift<S>(real_type_t<S>(1) / 6);
     Vec k1q = x.q, k1p = x.p, k2q = x.q, k2p = x.p, k3q = x.q, k3p = x.p, k4q = x.q, k4p = x.p;
@@ -166,12 +200,13 @@ struct symplectic_euler {
   static constexpr bool symplectic = true;
   System system;
   void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) const {
-    detail::require_finite_state(x, "symplectic_euler");
-    Vec f = x.q, v = x.p;
-    system.force(x.q, f);
-    detail::axpy(x.p, h, f);
-    system.velocity(x.p, v);
-    detail::axpy(x.q, h, v);
+    detail::guarded_step(x, h, "symplectic_euler", [&](phase_state<Vec>& y) {
+      Vec f = y.q, v = y.p;
+      system.force(y.q, f);
+      detail::axpy(y.p, h, f);
+      system.velocity(y.p, v);
+      detail::axpy(y.q, h, v);
+    });
   }
 };
 
@@ -185,8 +220,7 @@ class stormer_verlet {
   explicit stormer_verlet(System system) : system_(std::move(system)) {}
 
   void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) {
-    detail::require_finite_state(x, "stormer_verlet");
-    substep(x, h);
+    detail::guarded_step(x, h, "stormer_verlet", [&](phase_state<Vec>& y) { substep(y, h); });
   }
 
   /// One Verlet step without the finiteness check (used by compositions).
@@ -244,11 +278,12 @@ class composition {
       : verlet_(std::move(system)), weights_(triple_jump_weights<real_type_t<scalar>>(Order)) {}
 
   void operator()(phase_state<Vec>& x, const scalar& h) {
-    detail::require_finite_state(x, "composition");
-    for (const auto& w : weights_) {
-      const scalar hw = lift<scalar>(w) * h;
-      verlet_.substep(x, hw);
-    }
+    detail::guarded_step(x, h, "composition", [&](phase_state<Vec>& y) {
+      for (const auto& w : weights_) {
+        const scalar hw = lift<scalar>(w) * h;
+        verlet_.substep(y, hw);
+      }
+    });
   }
 
   const std::vector<real_type_t<scalar>>& weights() const { return weights_; }
@@ -321,7 +356,13 @@ class gauss_legendre {
   explicit gauss_legendre(System system) : system_(std::move(system)), tableau_(Stages) {}
 
   void operator()(phase_state<Vec>& x, const scalar& h) {
-    detail::require_finite_state(x, "gauss_legendre");
+    detail::guarded_step(x, h, "gauss_legendre", [&](phase_state<Vec>& y) { step(y, h); });
+  }
+
+  const gauss_legendre_tableau<real>& tableau() const { return tableau_; }
+
+ private:
+  void step(phase_state<Vec>& x, const scalar& h) {
     std::array<Vec, Stages> kq, kp;
     Vec fq = x.q, fp = x.p;
     system_.vector_field(x.q, x.p, fq, fp);
@@ -379,9 +420,6 @@ class gauss_legendre {
     compensated_ = !is_ad_v<scalar>;
   }
 
-  const gauss_legendre_tableau<real>& tableau() const { return tableau_; }
-
- private:
   /// y += h sum_i b_i k_i, compensated: comp carries the rounding of the last update.
   void add_compensated(Vec& y, const std::array<Vec, Stages>& k, Vec& comp, const scalar& h) const {
     for (Eigen::Index m = 0; m < y.size(); ++m) {
