@@ -7,6 +7,7 @@
 /// printed counterexample reproduces the case exactly.
 
 #include <cmath>
+#include <initializer_list>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -99,6 +100,10 @@ struct smooth_function {
   int dof = 1;
   std::vector<term> terms;
 
+  template <class T>
+  static T monomial_bound(const term& t, const phase_point<T>& x,
+                          std::initializer_list<int> lowered);
+
   bool has_wave() const {
     for (const auto& t : terms)
       if (t.kind != wave::none) return true;
@@ -110,6 +115,54 @@ struct smooth_function {
     for (const auto& t : terms)
       if (t.exponents[k] != 0 || (t.kind != wave::none && t.frequencies[k] != 0)) return false;
     return true;
+  }
+
+  /// Magnitudes of what an evaluation sums, the scales its rounding is relative to (a
+  /// sum that cancels has a small value but errors as large as its terms'). With
+  /// |sin|, |cos| <= 1, term t = c z^e w(a.z + b) and its derivatives are bounded by
+  ///   |t| <= |c| |z|^e,
+  ///   |d_i t| <= |c| (e_i |z|^(e - 1_i) + |a_i| |z|^e),
+  ///   |d_ij t| <= |c| (e_i (e_j - d_ij) |z|^(e - 1_i - 1_j) + e_i |a_j| |z|^(e - 1_i)
+  ///                    + |a_i| e_j |z|^(e - 1_j) + |a_i a_j| |z|^e),
+  /// summed over the terms. magnitude() gives the value bound, gradient_magnitude() and
+  /// hessian_magnitude() the Euclidean and Frobenius norms of the derivative bounds.
+  template <class T>
+  T magnitude(const phase_point<T>& x) const {
+    T sum = lift<T>(0);
+    for (const auto& t : terms) sum += monomial_bound(t, x, {});
+    return sum;
+  }
+  template <class T>
+  T gradient_magnitude(const phase_point<T>& x) const {
+    T norm2 = lift<T>(0);
+    for (int i = 0; i < 2 * dof; ++i) {
+      T g = lift<T>(0);
+      for (const auto& t : terms) {
+        g += lift<T>(t.exponents[i]) * monomial_bound(t, x, {i});
+        g += lift<T>(std::abs(t.frequencies[i])) * monomial_bound(t, x, {});
+      }
+      norm2 += g * g;
+    }
+    using std::sqrt;
+    return sqrt(norm2);
+  }
+  template <class T>
+  T hessian_magnitude(const phase_point<T>& x) const {
+    T norm2 = lift<T>(0);
+    for (int i = 0; i < 2 * dof; ++i)
+      for (int j = 0; j < 2 * dof; ++j) {
+        T h = lift<T>(0);
+        for (const auto& t : terms) {
+          const int ej = t.exponents[j] - (i == j ? 1 : 0);
+          if (ej > 0) h += lift<T>(t.exponents[i] * ej) * monomial_bound(t, x, {i, j});
+          h += lift<T>(t.exponents[i] * std::abs(t.frequencies[j])) * monomial_bound(t, x, {i});
+          h += lift<T>(std::abs(t.frequencies[i]) * t.exponents[j]) * monomial_bound(t, x, {j});
+          h += lift<T>(std::abs(t.frequencies[i] * t.frequencies[j])) * monomial_bound(t, x, {});
+        }
+        norm2 += h * h;
+      }
+    using std::sqrt;
+    return sqrt(norm2);
   }
 
   template <class S>
@@ -141,6 +194,24 @@ struct smooth_function {
     return sum;
   }
 };
+
+/// |c| prod_i |z_i|^(e_i - d_i) with the exponents lowered by one for each index in
+/// `lowered` (0 when an exponent would go negative: that derivative term is absent).
+template <class T>
+T smooth_function::monomial_bound(const term& t, const phase_point<T>& x,
+                                  std::initializer_list<int> lowered) {
+  using std::abs;
+  T value = lift<T>(std::abs(t.coefficient));
+  const int n = static_cast<int>(x.q().size());
+  for (int i = 0; i < 2 * n; ++i) {
+    int e = t.exponents[i];
+    for (const int l : lowered) e -= l == i ? 1 : 0;
+    if (e < 0) return lift<T>(0);
+    const T z = abs(i < n ? x.q()(i) : x.p()(i - n));
+    for (int k = 0; k < e; ++k) value *= z;
+  }
+  return value;
+}
 
 inline void showValue(const smooth_function& f, std::ostream& os) {
   const auto name = [&](int i) {
