@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "generators.hpp"
+#include "mechcheck/harness/generators.hpp"
 #include "mechcheck/harness/law.hpp"
 #include "mechcheck/harness/report.hpp"
 

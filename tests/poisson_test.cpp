@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "generators.hpp"
+#include "mechcheck/harness/generators.hpp"
 #include "mechcheck/poisson.hpp"
 #include "tiers.hpp"
 

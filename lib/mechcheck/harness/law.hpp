@@ -14,12 +14,16 @@
 ///   MECHCHECK_LAW(jacobi_identity);
 ///
 /// MECHCHECK_LAW registers one entry per tier (`using tiers = std::tuple<...>` in the law,
-/// default mechcheck::law_tiers). Each entry becomes one ctest test (label `property`)
+/// default mechcheck::law_tiers). When MECHCHECK_LAW_TIER names a tier type where the law
+/// is registered, only that tier is registered and instantiated (the build compiles each
+/// law file once per tier, see cmake/MechcheckLaws.cmake). Each entry becomes one ctest test (label `property`)
 /// and one row of the report; both run it through `run_law`, only the handler differs.
 
 #include <functional>
+#include <string_view>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include <rapidcheck.h>
@@ -41,41 +45,18 @@ struct registered_law {
 /// Every law linked into the program, in registration order.
 std::vector<registered_law>& registry();
 
-/// Turns RapidCheck's outcome and the recorded residuals into a report row.
-law_result make_result(const law_info& info, const std::string& tier, int digits,
-                       const run_config& config, const rc::detail::TestResult& outcome,
-                       const recorder& rec);
+/// Run a property (one law in one tier) with RapidCheck: the seed derives from the law
+/// id, cases come from the configuration, and the recorded residuals and the outcome
+/// become a report row. Not a template, so a law's translation unit does not
+/// instantiate RapidCheck's runner.
+law_result run_property(const law_info& info, std::string_view tier, int digits,
+                        const run_config& config, void (*property)());
 
 /// Run one law in tier T with the given seed and number of cases.
 template <class Law, class T>
 law_result run_law(const run_config& config) {
-  const law_info info = Law::info();
-  recorder rec;
-  recorder* const previous = active_recorder();
-  active_recorder() = &rec;
-  const auto property = [&rec] {
-    rec.begin_case();
-    try {
-      Law::template property<T>();
-    } catch (const rc::detail::CaseResult& r) {
-      if (r.type == rc::detail::CaseResult::Type::Failure) rec.freeze();
-      throw;
-    } catch (...) {
-      rec.freeze();
-      throw;
-    }
-    rec.end_case();
-  };
-  rc::detail::TestParams params;
-  params.seed = config.seed_for(info.id);
-  params.maxSuccess = config.cases;
-  rc::detail::TestMetadata metadata;
-  metadata.id = info.id + "." + std::string(tier_traits<T>::name);
-  metadata.description = info.title;
-  const auto outcome = rc::detail::checkTestable(property, metadata, params);
-  active_recorder() = previous;
-  return make_result(info, std::string(tier_traits<T>::name), tier_digits<T>(), config, outcome,
-                     rec);
+  return run_property(Law::info(), tier_traits<T>::name, tier_digits<T>(), config,
+                      &Law::template property<T>);
 }
 
 namespace detail {
@@ -89,23 +70,41 @@ struct law_tiers_of<Law> {
   using type = typename Law::tiers;
 };
 
-template <class Law, class... T>
+template <class Law, class T>
+void register_tier() {
+  registry().push_back(
+      {Law::info(), std::string(tier_traits<T>::name), tier_digits<T>(), &run_law<Law, T>});
+}
+
+/// Register Law in each of its tiers, or only in tier Only when it is not void and the
+/// law runs in it (a translation unit compiled for one tier).
+template <class Law, class Only, class... T>
 void register_tiers(std::tuple<T...>*) {
-  (registry().push_back({Law::info(), std::string(tier_traits<T>::name), tier_digits<T>(),
-                         &run_law<Law, T>}),
-   ...);
+  if constexpr (std::is_void_v<Only>) {
+    (register_tier<Law, T>(), ...);
+  } else if constexpr ((std::is_same_v<T, Only> || ...)) {
+    register_tier<Law, Only>();
+  }
 }
 }  // namespace detail
 
-template <class Law>
+template <class Law, class Only = void>
 struct law_registrar {
   law_registrar() {
-    detail::register_tiers<Law>(static_cast<typename detail::law_tiers_of<Law>::type*>(nullptr));
+    detail::register_tiers<Law, Only>(
+        static_cast<typename detail::law_tiers_of<Law>::type*>(nullptr));
   }
 };
 
 }  // namespace mechcheck::harness
 
+/// The tier a translation unit registers its laws in; `void` registers every tier. A
+/// build that compiles a law file once per tier redefines it before including the file.
+#ifndef MECHCHECK_LAW_TIER
+#define MECHCHECK_LAW_TIER void
+#endif
+
 /// Register a law: one ctest test and one report row per tier.
-#define MECHCHECK_LAW(Law) \
-  static const ::mechcheck::harness::law_registrar<Law> mechcheck_law_registrar_##Law {}
+#define MECHCHECK_LAW(Law)                                                           \
+  static const ::mechcheck::harness::law_registrar<Law, MECHCHECK_LAW_TIER>          \
+      mechcheck_law_registrar_##Law {}

@@ -76,6 +76,7 @@ std::uint64_t run_config::seed_for(const std::string& law_id) const {
   return mix(base_seed ^ h);
 }
 
+namespace {
 law_result make_result(const law_info& info, const std::string& tier, int digits,
                        const run_config& config, const rc::detail::TestResult& outcome,
                        const recorder& rec) {
@@ -136,6 +137,37 @@ law_result make_result(const law_info& info, const std::string& tier, int digits
   }
   r.message = msg.str();
   return r;
+}
+
+}  // namespace
+
+law_result run_property(const law_info& info, std::string_view tier, int digits,
+                        const run_config& config, void (*property)()) {
+  recorder rec;
+  recorder* const previous = active_recorder();
+  active_recorder() = &rec;
+  const auto body = [&rec, property] {
+    rec.begin_case();
+    try {
+      property();
+    } catch (const rc::detail::CaseResult& r) {
+      if (r.type == rc::detail::CaseResult::Type::Failure) rec.freeze();
+      throw;
+    } catch (...) {
+      rec.freeze();
+      throw;
+    }
+    rec.end_case();
+  };
+  rc::detail::TestParams params;
+  params.seed = config.seed_for(info.id);
+  params.maxSuccess = config.cases;
+  rc::detail::TestMetadata metadata;
+  metadata.id = info.id + "." + std::string(tier);
+  metadata.description = info.title;
+  const auto outcome = rc::detail::checkTestable(body, metadata, params);
+  active_recorder() = previous;
+  return make_result(info, std::string(tier), digits, config, outcome, rec);
 }
 
 }  // namespace mechcheck::harness

@@ -1,5 +1,7 @@
 #pragma once
-/// Every RapidCheck generator of the property suite lives here: coordinates, phase-space
+/// Every RapidCheck generator of the property suite lives here (declared here, defined
+/// once in generators.cpp, so that a law's translation unit does not instantiate
+/// RapidCheck's generator machinery): coordinates, phase-space
 /// points, positive masses, random smooth phase-space functions, radial potentials.
 ///
 /// Generated numbers are dyadic rationals (k / 256) held in doubles: they convert exactly
@@ -20,37 +22,22 @@
 namespace mechcheck::generators {
 
 /// Dyadic numbers k / 256 in [lo, hi].
-inline rc::Gen<double> dyadic(double lo, double hi) {
-  const int a = static_cast<int>(std::ceil(lo * 256)), b = static_cast<int>(std::floor(hi * 256));
-  return rc::gen::map(rc::gen::inRange(a, b + 1), [](int k) { return k / 256.0; });
-}
+rc::Gen<double> dyadic(double lo, double hi);
 
 /// Dyadic numbers k / 256 in [-bound, bound] that shrink towards 0.
-inline rc::Gen<double> dyadic_towards_zero(double bound) {
-  const int top = static_cast<int>(std::floor(bound * 256));
-  return rc::gen::map(rc::gen::pair(rc::gen::inRange(0, top + 1), rc::gen::arbitrary<bool>()),
-                      [](const std::pair<int, bool>& v) {
-                        return v.second ? -v.first / 256.0 : v.first / 256.0;
-                      });
-}
+rc::Gen<double> dyadic_towards_zero(double bound);
 
 /// A coordinate or momentum component in [-2, 2], shrinking towards 0.
-inline rc::Gen<double> coordinate() { return dyadic_towards_zero(2); }
+rc::Gen<double> coordinate();
 
 /// A positive mass or stiffness in [1/4, 4].
-inline rc::Gen<double> positive() { return dyadic(0.25, 4); }
+rc::Gen<double> positive();
 
 /// A coefficient with 1 <= |c| <= 2, shrinking towards 1.
-inline rc::Gen<double> coefficient() {
-  return rc::gen::map(rc::gen::pair(rc::gen::inRange(0, 257), rc::gen::arbitrary<bool>()),
-                      [](const std::pair<int, bool>& v) {
-                        const double c = 1 + v.first / 256.0;
-                        return v.second ? -c : c;
-                      });
-}
+rc::Gen<double> coefficient();
 
 /// Degrees of freedom n in [1, 3].
-inline rc::Gen<int> degrees_of_freedom() { return rc::gen::inRange(1, 4); }
+rc::Gen<int> degrees_of_freedom();
 
 /// A phase-space point with exactly representable coordinates.
 struct phase_sample {
@@ -65,24 +52,10 @@ struct phase_sample {
   }
 };
 
-inline void showValue(const phase_sample& x, std::ostream& os) {
-  const auto vec = [&](const std::vector<double>& v) {
-    os << "(";
-    for (std::size_t i = 0; i < v.size(); ++i) os << (i ? ", " : "") << v[i];
-    os << ")";
-  };
-  os << "q = ";
-  vec(x.q);
-  os << ", p = ";
-  vec(x.p);
-}
+void showValue(const phase_sample& x, std::ostream& os);
 
 /// A phase-space point with n degrees of freedom, components in [-2, 2].
-inline rc::Gen<phase_sample> phase_points(int n) {
-  return rc::gen::build<phase_sample>(
-      rc::gen::set(&phase_sample::q, rc::gen::container<std::vector<double>>(n, coordinate())),
-      rc::gen::set(&phase_sample::p, rc::gen::container<std::vector<double>>(n, coordinate())));
-}
+rc::Gen<phase_sample> phase_points(int n);
 
 /// A random smooth phase-space function on 2n variables z = (q, p):
 ///   f(z) = sum_terms c * z^e * w(a.z + b),   w in {1, sin, cos},
@@ -213,69 +186,14 @@ T smooth_function::monomial_bound(const term& t, const phase_point<T>& x,
   return value;
 }
 
-inline void showValue(const smooth_function& f, std::ostream& os) {
-  const auto name = [&](int i) {
-    return (i < f.dof ? "q" : "p") + std::to_string(i < f.dof ? i : i - f.dof);
-  };
-  if (f.terms.empty()) os << "0";
-  for (std::size_t k = 0; k < f.terms.size(); ++k) {
-    const auto& t = f.terms[k];
-    os << (k ? " + " : "") << t.coefficient;
-    for (int i = 0; i < 2 * f.dof; ++i)
-      if (t.exponents[i]) os << "*" << name(i) << (t.exponents[i] > 1 ? "^2" : "");
-    if (t.kind != smooth_function::wave::none) {
-      os << "*" << (t.kind == smooth_function::wave::sine ? "sin(" : "cos(") << t.phase;
-      for (int i = 0; i < 2 * f.dof; ++i)
-        if (t.frequencies[i]) os << " + " << t.frequencies[i] << "*" << name(i);
-      os << ")";
-    }
-  }
-}
+void showValue(const smooth_function& f, std::ostream& os);
 
-namespace detail {
-inline rc::Gen<smooth_function::term> smooth_term(int dof) {
-  return rc::gen::exec([dof] {
-    smooth_function::term t;
-    t.coefficient = *coefficient();
-    t.exponents.assign(2 * dof, 0);
-    const int degree = *rc::gen::inRange(0, 4);
-    for (int d = 0; d < degree; ++d) {
-      const int i = *rc::gen::inRange(0, 2 * dof);
-      if (t.exponents[i] < 2) ++t.exponents[i];
-    }
-    t.kind = *rc::gen::element(smooth_function::wave::none, smooth_function::wave::none,
-                               smooth_function::wave::sine, smooth_function::wave::cosine);
-    t.frequencies.assign(2 * dof, 0);
-    if (t.kind != smooth_function::wave::none) {
-      for (auto& a : t.frequencies) a = *rc::gen::inRange(-2, 3);
-      t.phase = *dyadic_towards_zero(3);
-    }
-    return t;
-  });
-}
-}  // namespace detail
 
 /// A random smooth function of n degrees of freedom with 1 to 4 terms.
-inline rc::Gen<smooth_function> smooth_functions(int dof) {
-  return rc::gen::exec([dof] {
-    smooth_function f;
-    f.dof = dof;
-    const int count = *rc::gen::inRange(1, 5);
-    for (int k = 0; k < count; ++k) f.terms.push_back(*detail::smooth_term(dof));
-    return f;
-  });
-}
+rc::Gen<smooth_function> smooth_functions(int dof);
 
 /// A random smooth function of n degrees of freedom that does not depend on q_k.
-inline rc::Gen<smooth_function> smooth_functions_without_q(int dof, int k) {
-  return rc::gen::map(smooth_functions(dof), [k](smooth_function f) {
-    for (auto& t : f.terms) {
-      t.exponents[k] = 0;
-      t.frequencies[k] = 0;
-    }
-    return f;
-  });
-}
+rc::Gen<smooth_function> smooth_functions_without_q(int dof, int k);
 
 /// A random radial potential U(r) = sum_j c_j r^j, j in {-2, -1, 1, 2, 3}, for r > 0.
 struct radial_potential {
@@ -294,27 +212,12 @@ struct radial_potential {
   }
 };
 
-inline void showValue(const radial_potential& u, std::ostream& os) {
-  os << "U(r) =";
-  for (const auto& [power, c] : u.terms) os << " + " << c << "*r^" << power;
-}
+void showValue(const radial_potential& u, std::ostream& os);
 
-inline rc::Gen<radial_potential> radial_potentials() {
-  return rc::gen::exec([] {
-    radial_potential u;
-    const int count = *rc::gen::inRange(1, 4);
-    for (int k = 0; k < count; ++k)
-      u.terms.emplace_back(*rc::gen::element(-2, -1, 1, 2, 3), *coefficient());
-    return u;
-  });
-}
+rc::Gen<radial_potential> radial_potentials();
 
 /// A point in R^3 x R^3 with |r| >= 1/4 (away from the centre of force).
-inline rc::Gen<phase_sample> points_away_from_origin() {
-  return rc::gen::suchThat(phase_points(3), [](const phase_sample& x) {
-    return x.q[0] * x.q[0] + x.q[1] * x.q[1] + x.q[2] * x.q[2] >= 1.0 / 16;
-  });
-}
+rc::Gen<phase_sample> points_away_from_origin();
 
 /// A pair potential of random shape: power law c r^k, Lennard-Jones-like or Morse-like.
 struct pair_potential {
@@ -336,51 +239,12 @@ struct pair_potential {
   }
 };
 
-inline void showValue(const pair_potential& u, std::ostream& os) {
-  switch (u.kind) {
-    case pair_potential::shape::power_law:
-      os << "U(r) = " << u.a << "*r^" << u.k;
-      break;
-    case pair_potential::shape::lennard_jones:
-      os << "U(r) = " << u.a << "*((" << u.b << "/r)^12 - 2*(" << u.b << "/r)^6)";
-      break;
-    default:
-      os << "U(r) = " << u.a << "*(1 - exp(-" << u.b << "*(r - " << u.c << ")))^2 - " << u.a;
-  }
-}
+void showValue(const pair_potential& u, std::ostream& os);
 
-inline rc::Gen<pair_potential> pair_potentials() {
-  return rc::gen::exec([] {
-    pair_potential u;
-    u.kind = *rc::gen::element(pair_potential::shape::power_law,
-                               pair_potential::shape::lennard_jones, pair_potential::shape::morse);
-    switch (u.kind) {
-      case pair_potential::shape::power_law:
-        u.a = *coefficient();
-        u.k = *rc::gen::element(-1, 2, -2, 1, 3);
-        break;
-      case pair_potential::shape::lennard_jones:
-        u.a = *dyadic(0.25, 1);
-        u.b = *dyadic(0.5, 1);
-        break;
-      default:
-        u.a = *dyadic(0.25, 2);
-        u.b = *dyadic(0.5, 2);
-        u.c = *dyadic(0.5, 1.5);
-    }
-    return u;
-  });
-}
+rc::Gen<pair_potential> pair_potentials();
 
 /// A homogeneous pair potential c r^k (degree k in {-2, -1, 1, 2, 3}).
-inline rc::Gen<pair_potential> homogeneous_pair_potentials() {
-  return rc::gen::exec([] {
-    pair_potential u;
-    u.a = *coefficient();
-    u.k = *rc::gen::element(-1, 2, -2, 1, 3);
-    return u;
-  });
-}
+rc::Gen<pair_potential> homogeneous_pair_potentials();
 
 /// N particles (at most 8): masses, positions at pairwise distances >= 1, velocities.
 struct particle_sample {
@@ -405,42 +269,30 @@ struct particle_sample {
   }
 };
 
-inline void showValue(const particle_sample& s, std::ostream& os) {
-  for (std::size_t i = 0; i < s.masses.size(); ++i)
-    os << (i ? "; " : "") << "m=" << s.masses[i] << " r=(" << s.q[3 * i] << ", "
-       << s.q[3 * i + 1] << ", " << s.q[3 * i + 2] << ") v=(" << s.qdot[3 * i] << ", "
-       << s.qdot[3 * i + 1] << ", " << s.qdot[3 * i + 2] << ")";
-}
+void showValue(const particle_sample& s, std::ostream& os);
 
-inline rc::Gen<particle_sample> particle_samples(int min_particles = 2, int max_particles = 4) {
-  return rc::gen::exec([=] {
-    particle_sample s;
-    const int n = *rc::gen::inRange(min_particles, max_particles + 1);
-    for (int i = 0; i < n; ++i) {
-      s.masses.push_back(*positive());
-      // Particle i sits within 1/2 of the corner i of the cube [-1, 1]^3: every pair is
-      // at least 1 apart, and the shrunk case is the corners themselves.
-      std::vector<double> r(3);
-      for (int c = 0; c < 3; ++c) r[c] = (((i >> c) & 1) ? 1.0 : -1.0) + *dyadic_towards_zero(0.5);
-      s.q.insert(s.q.end(), r.begin(), r.end());
-      for (int c = 0; c < 3; ++c) s.qdot.push_back(*coordinate());
-    }
-    return s;
-  });
-}
+rc::Gen<particle_sample> particle_samples(int min_particles = 2, int max_particles = 4);
+
+/// A model system chosen at random, with a state where its kinetic matrix is regular.
+struct model_case {
+  int which = 0;                  // 0 spring pendulum, 1 spherical, 2 rotating pivot, 3 N-body
+  std::vector<double> params, q, qdot;
+  double t = 0;
+  pair_potential pair;
+  particle_sample particles;
+};
+
+void showValue(const model_case& c, std::ostream& os);
+
+/// A model system with its parameters and a state: spring, spherical and rotating-pivot
+/// pendulums and N particles with a random pair potential.
+rc::Gen<model_case> model_cases();
 
 /// A direction: three dyadic components in [-2, 2], not all zero.
-inline rc::Gen<std::vector<double>> directions() {
-  return rc::gen::suchThat(rc::gen::container<std::vector<double>>(3, coordinate()),
-                           [](const std::vector<double>& v) {
-                             return v[0] != 0 || v[1] != 0 || v[2] != 0;
-                           });
-}
+rc::Gen<std::vector<double>> directions();
 
 /// Generic (q, qdot) of n coordinates in [-2, 2].
-inline rc::Gen<std::vector<double>> coordinates(int n) {
-  return rc::gen::container<std::vector<double>>(n, coordinate());
-}
+rc::Gen<std::vector<double>> coordinates(int n);
 
 template <class T>
 dynamic_vector<T> to_tier(const std::vector<double>& v) {

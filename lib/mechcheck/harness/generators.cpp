@@ -1,0 +1,265 @@
+/// The generators of generators.hpp, compiled once.
+#include "mechcheck/harness/generators.hpp"
+
+namespace mechcheck::generators {
+
+rc::Gen<double> dyadic(double lo, double hi) {
+  const int a = static_cast<int>(std::ceil(lo * 256)), b = static_cast<int>(std::floor(hi * 256));
+  return rc::gen::map(rc::gen::inRange(a, b + 1), [](int k) { return k / 256.0; });
+}
+
+rc::Gen<double> dyadic_towards_zero(double bound) {
+  const int top = static_cast<int>(std::floor(bound * 256));
+  return rc::gen::map(rc::gen::pair(rc::gen::inRange(0, top + 1), rc::gen::arbitrary<bool>()),
+                      [](const std::pair<int, bool>& v) {
+                        return v.second ? -v.first / 256.0 : v.first / 256.0;
+                      });
+}
+
+rc::Gen<double> coordinate() { return dyadic_towards_zero(2); }
+
+rc::Gen<double> positive() { return dyadic(0.25, 4); }
+
+rc::Gen<double> coefficient() {
+  return rc::gen::map(rc::gen::pair(rc::gen::inRange(0, 257), rc::gen::arbitrary<bool>()),
+                      [](const std::pair<int, bool>& v) {
+                        const double c = 1 + v.first / 256.0;
+                        return v.second ? -c : c;
+                      });
+}
+
+rc::Gen<int> degrees_of_freedom() { return rc::gen::inRange(1, 4); }
+
+void showValue(const phase_sample& x, std::ostream& os) {
+  const auto vec = [&](const std::vector<double>& v) {
+    os << "(";
+    for (std::size_t i = 0; i < v.size(); ++i) os << (i ? ", " : "") << v[i];
+    os << ")";
+  };
+  os << "q = ";
+  vec(x.q);
+  os << ", p = ";
+  vec(x.p);
+}
+
+rc::Gen<phase_sample> phase_points(int n) {
+  return rc::gen::build<phase_sample>(
+      rc::gen::set(&phase_sample::q, rc::gen::container<std::vector<double>>(n, coordinate())),
+      rc::gen::set(&phase_sample::p, rc::gen::container<std::vector<double>>(n, coordinate())));
+}
+
+void showValue(const smooth_function& f, std::ostream& os) {
+  const auto name = [&](int i) {
+    return (i < f.dof ? "q" : "p") + std::to_string(i < f.dof ? i : i - f.dof);
+  };
+  if (f.terms.empty()) os << "0";
+  for (std::size_t k = 0; k < f.terms.size(); ++k) {
+    const auto& t = f.terms[k];
+    os << (k ? " + " : "") << t.coefficient;
+    for (int i = 0; i < 2 * f.dof; ++i)
+      if (t.exponents[i]) os << "*" << name(i) << (t.exponents[i] > 1 ? "^2" : "");
+    if (t.kind != smooth_function::wave::none) {
+      os << "*" << (t.kind == smooth_function::wave::sine ? "sin(" : "cos(") << t.phase;
+      for (int i = 0; i < 2 * f.dof; ++i)
+        if (t.frequencies[i]) os << " + " << t.frequencies[i] << "*" << name(i);
+      os << ")";
+    }
+  }
+}
+
+namespace detail {
+rc::Gen<smooth_function::term> smooth_term(int dof) {
+  return rc::gen::exec([dof] {
+    smooth_function::term t;
+    t.coefficient = *coefficient();
+    t.exponents.assign(2 * dof, 0);
+    const int degree = *rc::gen::inRange(0, 4);
+    for (int d = 0; d < degree; ++d) {
+      const int i = *rc::gen::inRange(0, 2 * dof);
+      if (t.exponents[i] < 2) ++t.exponents[i];
+    }
+    t.kind = *rc::gen::element(smooth_function::wave::none, smooth_function::wave::none,
+                               smooth_function::wave::sine, smooth_function::wave::cosine);
+    t.frequencies.assign(2 * dof, 0);
+    if (t.kind != smooth_function::wave::none) {
+      for (auto& a : t.frequencies) a = *rc::gen::inRange(-2, 3);
+      t.phase = *dyadic_towards_zero(3);
+    }
+    return t;
+  });
+}
+}  // namespace detail
+
+
+rc::Gen<smooth_function> smooth_functions(int dof) {
+  return rc::gen::exec([dof] {
+    smooth_function f;
+    f.dof = dof;
+    const int count = *rc::gen::inRange(1, 5);
+    for (int k = 0; k < count; ++k) f.terms.push_back(*detail::smooth_term(dof));
+    return f;
+  });
+}
+
+rc::Gen<smooth_function> smooth_functions_without_q(int dof, int k) {
+  return rc::gen::map(smooth_functions(dof), [k](smooth_function f) {
+    for (auto& t : f.terms) {
+      t.exponents[k] = 0;
+      t.frequencies[k] = 0;
+    }
+    return f;
+  });
+}
+
+void showValue(const radial_potential& u, std::ostream& os) {
+  os << "U(r) =";
+  for (const auto& [power, c] : u.terms) os << " + " << c << "*r^" << power;
+}
+
+rc::Gen<radial_potential> radial_potentials() {
+  return rc::gen::exec([] {
+    radial_potential u;
+    const int count = *rc::gen::inRange(1, 4);
+    for (int k = 0; k < count; ++k)
+      u.terms.emplace_back(*rc::gen::element(-2, -1, 1, 2, 3), *coefficient());
+    return u;
+  });
+}
+
+rc::Gen<phase_sample> points_away_from_origin() {
+  return rc::gen::suchThat(phase_points(3), [](const phase_sample& x) {
+    return x.q[0] * x.q[0] + x.q[1] * x.q[1] + x.q[2] * x.q[2] >= 1.0 / 16;
+  });
+}
+
+void showValue(const pair_potential& u, std::ostream& os) {
+  switch (u.kind) {
+    case pair_potential::shape::power_law:
+      os << "U(r) = " << u.a << "*r^" << u.k;
+      break;
+    case pair_potential::shape::lennard_jones:
+      os << "U(r) = " << u.a << "*((" << u.b << "/r)^12 - 2*(" << u.b << "/r)^6)";
+      break;
+    default:
+      os << "U(r) = " << u.a << "*(1 - exp(-" << u.b << "*(r - " << u.c << ")))^2 - " << u.a;
+  }
+}
+
+rc::Gen<pair_potential> pair_potentials() {
+  return rc::gen::exec([] {
+    pair_potential u;
+    u.kind = *rc::gen::element(pair_potential::shape::power_law,
+                               pair_potential::shape::lennard_jones, pair_potential::shape::morse);
+    switch (u.kind) {
+      case pair_potential::shape::power_law:
+        u.a = *coefficient();
+        u.k = *rc::gen::element(-1, 2, -2, 1, 3);
+        break;
+      case pair_potential::shape::lennard_jones:
+        u.a = *dyadic(0.25, 1);
+        u.b = *dyadic(0.5, 1);
+        break;
+      default:
+        u.a = *dyadic(0.25, 2);
+        u.b = *dyadic(0.5, 2);
+        u.c = *dyadic(0.5, 1.5);
+    }
+    return u;
+  });
+}
+
+rc::Gen<pair_potential> homogeneous_pair_potentials() {
+  return rc::gen::exec([] {
+    pair_potential u;
+    u.a = *coefficient();
+    u.k = *rc::gen::element(-1, 2, -2, 1, 3);
+    return u;
+  });
+}
+
+void showValue(const particle_sample& s, std::ostream& os) {
+  for (std::size_t i = 0; i < s.masses.size(); ++i)
+    os << (i ? "; " : "") << "m=" << s.masses[i] << " r=(" << s.q[3 * i] << ", "
+       << s.q[3 * i + 1] << ", " << s.q[3 * i + 2] << ") v=(" << s.qdot[3 * i] << ", "
+       << s.qdot[3 * i + 1] << ", " << s.qdot[3 * i + 2] << ")";
+}
+
+rc::Gen<particle_sample> particle_samples(int min_particles, int max_particles) {
+  return rc::gen::exec([=] {
+    particle_sample s;
+    const int n = *rc::gen::inRange(min_particles, max_particles + 1);
+    for (int i = 0; i < n; ++i) {
+      s.masses.push_back(*positive());
+      // Particle i sits within 1/2 of the corner i of the cube [-1, 1]^3: every pair is
+      // at least 1 apart, and the shrunk case is the corners themselves.
+      std::vector<double> r(3);
+      for (int c = 0; c < 3; ++c) r[c] = (((i >> c) & 1) ? 1.0 : -1.0) + *dyadic_towards_zero(0.5);
+      s.q.insert(s.q.end(), r.begin(), r.end());
+      for (int c = 0; c < 3; ++c) s.qdot.push_back(*coordinate());
+    }
+    return s;
+  });
+}
+
+rc::Gen<std::vector<double>> directions() {
+  return rc::gen::suchThat(rc::gen::container<std::vector<double>>(3, coordinate()),
+                           [](const std::vector<double>& v) {
+                             return v[0] != 0 || v[1] != 0 || v[2] != 0;
+                           });
+}
+
+rc::Gen<std::vector<double>> coordinates(int n) {
+  return rc::gen::container<std::vector<double>>(n, coordinate());
+}
+
+void showValue(const model_case& c, std::ostream& os) {
+  static const char* names[] = {"spring pendulum", "spherical pendulum", "rotating pivot",
+                                "particles"};
+  os << names[c.which] << " params (";
+  for (double p : c.params) os << p << " ";
+  os << ") q (";
+  for (double x : c.q) os << x << " ";
+  os << ") qdot (";
+  for (double x : c.qdot) os << x << " ";
+  os << ") t " << c.t;
+  if (c.which == 3) {
+    os << " ";
+    showValue(c.pair, os);
+    os << " ";
+    showValue(c.particles, os);
+  }
+}
+
+rc::Gen<model_case> model_cases() {
+  return rc::gen::exec([] {
+    model_case c;
+    c.which = *rc::gen::inRange(0, 4);
+    switch (c.which) {
+      case 0:  // m, k, l, g; x in [-1/2, 1/2] with l >= 1
+        c.params = {*positive(), *positive(), *dyadic(1, 3), *positive()};
+        c.q = {*dyadic_towards_zero(0.5), *coordinate()};
+        c.qdot = *coordinates(2);
+        break;
+      case 1:  // m, l, g; theta in [1/2, 3/2] keeps sin^2(theta) >= 0.23
+        c.params = {*positive(), *positive(), *positive()};
+        c.q = {*dyadic(0.5, 1.5), *coordinate()};
+        c.qdot = *coordinates(2);
+        break;
+      case 2:  // m, l, g, R, w
+        c.params = {*positive(), *positive(), *positive(), *positive(),
+                    *coefficient()};
+        c.q = {*coordinate()};
+        c.qdot = {*coordinate()};
+        c.t = *coordinate();
+        break;
+      default:
+        c.pair = *pair_potentials();
+        c.particles = *particle_samples(2, 3);
+        c.q = c.particles.q;
+        c.qdot = c.particles.qdot;
+    }
+    return c;
+  });
+}
+
+}  // namespace mechcheck::generators
