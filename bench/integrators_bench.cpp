@@ -19,6 +19,7 @@
 #include <benchmark/benchmark.h>
 #include <boost/numeric/odeint.hpp>
 
+#include "mechcheck/audit/studies.hpp"
 #include "mechcheck/integrators.hpp"
 
 namespace {
@@ -186,37 +187,25 @@ void brouwer(benchmark::State& state) {
   using V = Eigen::Vector2d;
   const long steps = 1000000;
   const double h = 2 * M_PI / 500;  // 500 steps per period of the e = 0.21 orbit's scale
-  double exponent = 0, final_error = 0;
+  double exponent = 0, final_error = 0, sweeps_per_step = 0;
   for (auto _ : state) {
     const kepler<double> sys(1.0, 1.0);
     mechcheck::gauss_legendre<kepler<double>, V, 4> gl(sys);
     mechcheck::phase_state<V> x{V(1, 0), V(0, 1.1)};
     const double e0 = sys.energy(x.q, x.p);
-    // window w covers steps [2^w, 2^(w+1)): accumulate squared relative errors
-    std::vector<double> sum(25, 0.0), count(25, 0.0);
+    mechcheck::audit::growth_recorder growth;  // windows [2^w, 2^(w+1)) of steps
     for (long i = 1; i <= steps; ++i) {
       gl(x, h);
       const double err = (sys.energy(x.q, x.p) - e0) / std::abs(e0);
-      const int w = static_cast<int>(std::floor(std::log2(static_cast<double>(i))));
-      sum[w] += err * err;
-      count[w] += 1;
+      growth.add(i, err);
       final_error = std::abs(err);
     }
-    // fit log(rms) = a + exponent log(t) over windows from 2^8 steps on
-    double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
-    for (int w = 8; w < 25; ++w) {
-      if (count[w] == 0 || sum[w] == 0) continue;
-      const double lt = std::log(std::ldexp(1.5, w)), ly = 0.5 * std::log(sum[w] / count[w]);
-      sx += lt;
-      sy += ly;
-      sxx += lt * lt;
-      sxy += lt * ly;
-      n += 1;
-    }
-    exponent = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    exponent = growth.exponent(8).value_or(0);  // fit from 2^8 steps on
+    sweeps_per_step = static_cast<double>(gl.sweeps()) / static_cast<double>(steps);
   }
   state.counters["energy_error_exponent"] = exponent;
   state.counters["final_relative_energy_error"] = final_error;
+  state.counters["stage_sweeps_per_step"] = sweeps_per_step;
 }
 BENCHMARK(brouwer)->Name("brouwer/gauss_legendre4/double")->Iterations(1)->Unit(benchmark::kSecond);
 

@@ -83,6 +83,48 @@ struct kepler_system {
   }
 };
 
+/// Isotropic harmonic oscillator H = |p|^2 / (2m) + k |q|^2 / 2 in any dimension.
+template <class T>
+struct harmonic_oscillator_system {
+  T mass, stiffness;
+  harmonic_oscillator_system(T m, T k) : mass(std::move(m)), stiffness(std::move(k)) {
+    require_positive(mass, "harmonic_oscillator_system", "mass");
+    require_positive(stiffness, "harmonic_oscillator_system", "stiffness");
+  }
+  template <class Vec>
+  void velocity(const Vec& p, Vec& dq) const {
+    using S = typename Vec::Scalar;
+    using R = real_type_t<S>;
+    const S inv_m = lift<S>(R(1) / R(mass));
+    for (Eigen::Index i = 0; i < p.size(); ++i) dq(i) = p(i) * inv_m;
+  }
+  template <class Vec>
+  void force(const Vec& q, Vec& dp) const {
+    using S = typename Vec::Scalar;
+    const S minus_k = lift<S>(real_type_t<S>(-stiffness));
+    for (Eigen::Index i = 0; i < q.size(); ++i) dp(i) = q(i) * minus_k;
+  }
+  template <class Vec>
+  void vector_field(const Vec& q, const Vec& p, Vec& dq, Vec& dp) const {
+    velocity(p, dq);
+    force(q, dp);
+  }
+  template <class Vec>
+  typename Vec::Scalar energy(const Vec& q, const Vec& p) const {
+    using S = typename Vec::Scalar;
+    using R = real_type_t<S>;
+    S p2 = lift<S>(0), q2 = lift<S>(0);
+    for (Eigen::Index i = 0; i < p.size(); ++i) {
+      const S a = p(i) * p(i), b = q(i) * q(i);
+      p2 += a;
+      q2 += b;
+    }
+    const S kinetic = p2 * lift<S>(R(1) / (R(2) * R(mass)));
+    const S potential = q2 * lift<S>(R(stiffness) / R(2));
+    return kinetic + potential;
+  }
+};
+
 /// Simple pendulum H = p^2 / (2 m l^2) - m g l cos(q) (notes eq 260), n = 1.
 template <class T>
 struct pendulum_system {
