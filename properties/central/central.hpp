@@ -9,7 +9,7 @@
 #include <cmath>
 #include <numbers>
 #include <boost/math/quadrature/tanh_sinh.hpp>
-#include "convergence.hpp"
+#include "mechcheck/audit/studies.hpp"
 #include "mechcheck/harness/generators.hpp"
 #include "mechcheck/harness/law.hpp"
 
@@ -23,9 +23,9 @@ using mc::vector3;
 using mc::harness::check_close;
 using mc::harness::check_zero;
 using mc::harness::law_info;
-using mc::properties::check_exponent;
-using mc::properties::converged_exponent;
-using mc::properties::steps_for;
+using mc::harness::check_exponent;
+using mc::audit::converged_exponent;
+using mc::audit::steps_for;
 
 template <class T>
 T pi() {

@@ -9,7 +9,8 @@
 
 #include <cmath>
 #include <optional>
-#include "convergence.hpp"
+#include "mechcheck/audit/studies.hpp"
+#include "mechcheck/audit/symplectic.hpp"
 #include "mechcheck/harness/generators.hpp"
 #include "mechcheck/harness/law.hpp"
 #include "mechcheck/reference.hpp"
@@ -22,10 +23,12 @@ using mc::dynamic_matrix;
 using mc::dynamic_vector;
 using mc::lift;
 using mc::harness::check_close;
-using mc::properties::check_exponent;
-using mc::properties::converged_exponent;
+using mc::harness::check_exponent;
+using mc::audit::converged_exponent;
 using mc::harness::check_zero;
 using mc::harness::law_info;
+using mc::audit::step_jacobian;
+using mc::audit::symplectic_defect;
 
 template <class Sys, class V>
 using yoshida4 = mc::composition<Sys, V, 4>;
@@ -47,41 +50,6 @@ using gauss3 = mc::gauss_legendre<Sys, V, 3>;
 
 template <class Sys, class V>
 using gauss4 = mc::gauss_legendre<Sys, V, 4>;
-
-/// The symplectic form J = [[0, I], [-I, 0]] of eq 300.
-template <class T>
-dynamic_matrix<T> symplectic_form(Eigen::Index n) {
-  dynamic_matrix<T> j = dynamic_matrix<T>::Zero(2 * n, 2 * n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    j(i, n + i) = lift<T>(1);
-    j(n + i, i) = lift<T>(-1);
-  }
-  return j;
-}
-
-/// max |M J M^T - J| (eq 302).
-template <class T>
-T symplectic_defect(const dynamic_matrix<T>& m) {
-  const Eigen::Index n = m.rows() / 2;
-  const dynamic_matrix<T> j = symplectic_form<T>(n);
-  const dynamic_matrix<T> d = m * j * m.transpose() - j;
-  return d.cwiseAbs().maxCoeff();
-}
-
-/// Jacobian of one step of Method on System at z = (q, p) with step h.
-template <template <class, class> class Method, class System, class T>
-dynamic_matrix<T> step_jacobian(const System& system, const dynamic_vector<T>& z, const T& h) {
-  const Eigen::Index n = z.size() / 2;
-  const auto step = [&system, &h, n]<class S>(const dynamic_vector<S>& w) -> dynamic_vector<S> {
-    Method<System, dynamic_vector<S>> method{system};
-    mc::phase_state<dynamic_vector<S>> x{w.head(n), w.tail(n)};
-    method(x, lift<S>(h));
-    dynamic_vector<S> out(2 * n);
-    out << x.q, x.p;
-    return out;
-  };
-  return mc::jacobian(step, z);
-}
 
 /// A generic bound Kepler state (k = m = 1): |q| = r in [1/2, 2], tangential speed
 /// f sqrt(1/r) with f in [3/4, 9/8] (eccentricity well below 1, far from collision) and a

@@ -20,7 +20,7 @@ template <template <class, class> class Method, class System, class T>
 std::optional<T> fitted_order(const System& system, const dynamic_vector<T>& z, long steps,
                               int p) {
   const auto error = [&](const T& h) {
-    const long n = mc::properties::steps_for(h);
+    const long n = mc::audit::steps_for(h);
     return T((state_at_one<Method>(system, z, n) - state_at_one<Method>(system, z, 2 * n)).norm());
   };
   return converged_exponent(error, T(T(1) / T(steps)), p, T(z.norm() + 1));

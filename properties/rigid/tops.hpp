@@ -10,7 +10,7 @@
 
 #include <array>
 #include <cmath>
-#include "convergence.hpp"
+#include "mechcheck/audit/studies.hpp"
 #include "mechcheck/harness/generators.hpp"
 #include "mechcheck/harness/law.hpp"
 #include "mechcheck/reference.hpp"
@@ -26,9 +26,9 @@ using mc::vector3;
 using mc::harness::check_close;
 using mc::harness::check_zero;
 using mc::harness::law_info;
-using mc::properties::check_exponent;
-using mc::properties::converged_exponent;
-using mc::properties::steps_for;
+using mc::harness::check_exponent;
+using mc::audit::converged_exponent;
+using mc::audit::steps_for;
 
 template <class T>
 using body_stepper = mc::gauss_legendre<mc::free_rigid_body<T>, dynamic_vector<T>, 4>;

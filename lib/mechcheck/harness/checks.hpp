@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -94,6 +95,17 @@ void check_close(const std::string& what, const T& computed, const T& expected, 
 template <class T>
 void check_zero(const std::string& what, const T& computed, const T& scale, double budget_eps) {
   check_close(what, computed, lift<T>(0), scale, budget_eps);
+}
+
+/// Check an exponent fitted by a convergence study (audit/studies.hpp) against the
+/// truncation model's, within 0.4; a study that reached the tier's rounding floor before
+/// the exponent settled (nothing fitted) is classified, not judged.
+template <class T>
+void check_exponent(const std::string& what, const std::optional<T>& fitted, int expected) {
+  RC_CLASSIFY(!fitted, what + " below the rounding floor");
+  if (!fitted) return;
+  check_close(what, *fitted, T(expected), lift<T>(1),
+              static_cast<double>(T(0.4) / tier_epsilon<T>()));
 }
 
 }  // namespace mechcheck::harness

@@ -1,0 +1,494 @@
+#pragma once
+/// Auditing a stepper: what it does on reference problems with exact solutions, against
+/// what it declares.
+///
+/// For every problem a stepper can take (splitting methods need a separable H), in one
+/// tier T, the audit measures
+///   - the global order: the error at t_end against the exact solution while the step
+///     halves, fitted over the halvings above the rounding floor (audit/studies.hpp);
+///   - the local order: the error of one step from the initial state, against the exact
+///     solution, down to the rounding floor (p + 1 for a method of order p); in a
+///     high-precision tier this resolves coefficients that are right only to a lower
+///     precision (their error term appears at small h);
+///   - symplecticity (canonical problems): max |M J M^T - J| of one step, M by AD through
+///     the stepper, in eps units against a rounding budget, or the power of h it scales
+///     with;
+///   - time symmetry: step(-h) after step(h) returns to the start within a rounding
+///     budget, or the defect's power of h;
+///   - the long run: the growth exponent of the energy error over many steps (bounded,
+///     random walk t^1/2, linear drift or worse) and of every first integral's drift
+///     (angular momentum, the Laplace-Runge-Lenz vector, |M|^2 of the top), or that it is
+///     preserved to rounding;
+///   - cost: force or vector-field evaluations per step (counted), time per step, and
+///     the work-precision points of the global study.
+/// The result is a plain value (audit/report.hpp prints it, writes JSON and Markdown);
+/// each claim the stepper declares (order, symplectic, symmetric) is confirmed or
+/// contradicted with its evidence.
+///
+/// A stepper is audited through stepper_under_audit<T>: a name, the claims, and how to
+/// make it on erased_system<T> for scalars T and ad<T> (the AD one gives Jacobians).
+/// `method<Method>(name)` adapts the library's form `Method<System, Vec>{system}`, whose
+/// static members order/symplectic/symmetric are the claims.
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mechcheck/audit/problems.hpp"
+#include "mechcheck/audit/result.hpp"
+#include "mechcheck/audit/studies.hpp"
+#include "mechcheck/audit/symplectic.hpp"
+#include "mechcheck/core.hpp"
+
+namespace mechcheck::audit {
+
+template <class S>
+using step_function = std::function<void(state<S>&, const S&)>;
+
+/// A stepper under audit in tier T.
+template <class T>
+struct stepper_under_audit {
+  std::string name;
+  claims declared;
+  std::string origin;  ///< where it and its claims come from (shown in the report)
+  std::function<step_function<T>(const erased_system<T>&)> make;
+  /// The same stepper on ad<T> scalars (for the symplectic condition); empty if the
+  /// stepper cannot run on AD scalars.
+  std::function<step_function<ad<T>>(const erased_system<T>&)> make_ad;
+};
+
+namespace detail {
+template <class M>
+claims claims_of() {
+  claims c;
+  if constexpr (requires { M::order; }) c.order = static_cast<int>(M::order);
+  if constexpr (requires { M::symplectic; }) c.symplectic = static_cast<bool>(M::symplectic);
+  if constexpr (requires { M::symmetric; }) c.symmetric = static_cast<bool>(M::symmetric);
+  return c;
+}
+
+template <template <class, class> class Method, class S, class T>
+step_function<S> make_step(const erased_system<T>& system) {
+  using M = Method<erased_system<T>, dynamic_vector<S>>;
+  auto stepper = std::make_shared<M>(M{system});
+  return [stepper](state<S>& x, const S& h) { (*stepper)(x, h); };
+}
+}  // namespace detail
+
+/// A stepper of the library's form Method<System, Vec> (constructed as Method{system}),
+/// its claims read from the static members order, symplectic and symmetric.
+template <template <class, class> class Method, class T>
+stepper_under_audit<T> method(std::string name) {
+  stepper_under_audit<T> s;
+  s.name = std::move(name);
+  s.origin = "mechcheck: static members order, symplectic, symmetric";
+  s.declared = detail::claims_of<Method<erased_system<T>, dynamic_vector<T>>>();
+  s.make = [](const erased_system<T>& sys) { return detail::make_step<Method, T>(sys); };
+  s.make_ad = [](const erased_system<T>& sys) { return detail::make_step<Method, ad<T>>(sys); };
+  return s;
+}
+
+/// Thrown by erased_system when a stepper asks a non-separable system for its force.
+namespace detail {
+inline bool is_not_separable(const std::exception& e) {
+  return std::string(e.what()).find("is not separable") != std::string::npos;
+}
+
+template <class T>
+double to_double(const T& x) {
+  return static_cast<double>(x);
+}
+
+template <class T>
+T distance(const state<T>& a, const state<T>& b) {
+  using std::sqrt;
+  return sqrt(T((a.q - b.q).squaredNorm() + (a.p - b.p).squaredNorm()));
+}
+
+template <class T>
+double eps_of() {
+  return static_cast<double>(tier_epsilon<T>());
+}
+
+/// The points of a study inside the convergent regime (error below 10^-1 of the scale).
+inline std::vector<study_point> convergent_points(const std::vector<study_point>& points) {
+  std::vector<study_point> out;
+  for (const auto& p : points)
+    if (p.error < 0.1) out.push_back(p);
+  return out;
+}
+
+/// Global order: runs of n, 2n, 4n, ... steps over [0, t_end] from steps0 / 4 (runs that
+/// throw are skipped: a coarse step can leave the convergent regime), until the error
+/// reaches the rounding floor or the runs exceed max_steps. A halving enters the fit when
+/// both errors are 100 times the rounding floor eps sqrt(evaluations) (a random walk of
+/// one rounding per evaluation: the exponent then moves by less than 0.02) and below
+/// 10^-1 (inside the convergent regime).
+template <class T>
+order_study global_order(const stepper_under_audit<T>& s, const problem<T>& pr,
+                         const audit_options& opt) {
+  order_study study;
+  const state<T> reference = pr.exact(pr.t_end);
+  const double eps = eps_of<T>();
+  std::vector<study_point> valid;
+  double resolvable = 0;
+  for (long n = std::max<long>(2, pr.steps0 / 4); n <= opt.max_study_steps; n *= 2) {
+    pr.system.reset_evaluations();
+    state<T> x = pr.initial;
+    const T h = pr.t_end / T(n);
+    try {
+      auto step = s.make(pr.system);
+      for (long i = 0; i < n; ++i) step(x, h);
+    } catch (const std::exception& e) {
+      study.note = "h = " + to_text(h) + ": " + e.what();
+      continue;
+    }
+    const double evals = static_cast<double>(pr.system.evaluations());
+    const double error = to_double(T(distance(x, reference) / pr.scale));
+    study.points.push_back({to_double(h), error, evals});
+    const double floor = eps * std::sqrt(std::max(evals, 1.0));
+    resolvable = std::max(resolvable, 100 * floor);
+    if (error < 100 * floor) break;  // at the floor: finer steps only measure rounding
+    // Settled: three exponents agree within 0.05 (finer runs cost more and add nothing).
+    study.fit = fit_halvings(convergent_points(study.points), resolvable);
+    if (study.fit.used == 3 && study.fit.spread < 0.05) break;
+  }
+  study.fit = fit_halvings(convergent_points(study.points), resolvable);
+  return study;
+}
+
+/// Local order: the error of one step from the initial state against the exact solution,
+/// h halving from h_local down to the rounding floor (a step of m evaluations rounds at
+/// ~ m eps): p + 1 for a method of order p.
+template <class T>
+order_study local_order(const stepper_under_audit<T>& s, const problem<T>& pr,
+                        const audit_options& opt) {
+  order_study study;
+  const double eps = eps_of<T>();
+  double resolvable = 0;
+  T h = 8 * pr.h_local;  // high orders reach the floor within a few halvings of h_local
+  for (int k = 0; k <= opt.max_local_halvings; ++k, h /= 2) {
+    pr.system.reset_evaluations();
+    state<T> x = pr.initial;
+    try {
+      s.make(pr.system)(x, h);
+    } catch (const std::exception& e) {
+      study.note = "h = " + to_text(h) + ": " + e.what();
+      continue;
+    }
+    const double evals = static_cast<double>(pr.system.evaluations());
+    const double error = to_double(T(distance(x, pr.exact(h)) / pr.scale));
+    study.points.push_back({to_double(h), error, evals});
+    const double floor = 16 * eps * std::max(evals, 1.0);
+    resolvable = std::max(resolvable, 16 * floor);
+    if (error < floor) break;
+  }
+  study.fit = fit_halvings(convergent_points(study.points), resolvable);
+  return study;
+}
+
+/// A defect d(h) that vanishes to rounding for the claimed property: tested at h_local,
+/// h_local/2 and h_local/4 against the budget; when over it, followed down by halvings
+/// until within the budget, and its power of h fitted.
+template <class T, class Defect>
+defect_study defect_of(const problem<T>& pr, const audit_options& opt, Defect&& defect,
+                       double budget_eps) {
+  defect_study d;
+  d.budget_eps = budget_eps;
+  T h = pr.h_local;
+  bool over = false;
+  for (int k = 0; k < 3; ++k, h /= 2) {
+    const auto [value, scale] = defect(h);
+    const double eps_units = to_double(T(value / (tier_epsilon<T>() * scale)));
+    d.worst_eps = std::max(d.worst_eps, eps_units);
+    d.points.push_back({to_double(h), to_double(T(value / scale)), 0});
+    over = over || !(eps_units <= budget_eps);
+  }
+  d.within_rounding = !over;
+  if (d.within_rounding) {
+    d.points.clear();
+    return d;
+  }
+  for (int k = 3; k <= opt.max_local_halvings; ++k, h /= 2) {
+    const auto [value, scale] = defect(h);
+    const double eps_units = to_double(T(value / (tier_epsilon<T>() * scale)));
+    d.points.push_back({to_double(h), to_double(T(value / scale)), 0});
+    if (eps_units <= budget_eps) break;
+  }
+  d.exponent = fit_halvings(d.points, 16 * budget_eps * eps_of<T>());
+  return d;
+}
+
+/// max |M J M^T - J| of one step at the initial state, on the scale |M|^2; budget
+/// 16 (m + 1) 2n eps for a step of m evaluations on n degrees of freedom.
+template <class T>
+defect_study symplectic_condition(const stepper_under_audit<T>& s, const problem<T>& pr,
+                                  const audit_options& opt, double evaluations_per_step) {
+  const Eigen::Index n = pr.initial.q.size();
+  dynamic_vector<T> z(2 * n);
+  z << pr.initial.q, pr.initial.p;
+  const auto defect = [&](const T& h) -> std::pair<T, T> {
+    const auto make = [&s, &pr]<class S>() { return s.make_ad(pr.system); };
+    const dynamic_matrix<T> m = step_jacobian_of(make, z, h, n);
+    return {symplectic_defect(m), T(m.squaredNorm())};
+  };
+  return defect_of(pr, opt, defect, 16.0 * (evaluations_per_step + 1) * 2.0 * double(n));
+}
+
+/// |step(-h) step(h) x0 - x0| on the scale |x0|; budget 16 (2m + 1) eps.
+template <class T>
+defect_study time_symmetry(const stepper_under_audit<T>& s, const problem<T>& pr,
+                           const audit_options& opt, double evaluations_per_step) {
+  const auto defect = [&](const T& h) -> std::pair<T, T> {
+    state<T> x = pr.initial;
+    auto step = s.make(pr.system);
+    step(x, h);
+    step(x, T(-h));
+    return {distance(x, pr.initial), pr.scale};
+  };
+  return defect_of(pr, opt, defect, 16.0 * (2 * evaluations_per_step + 1));
+}
+
+/// The long run: `steps` steps of h_long, the drift of every invariant recorded.
+template <class T>
+long_run run_long(const stepper_under_audit<T>& s, const problem<T>& pr,
+                  const audit_options& opt) {
+  long_run run;
+  run.steps = opt.long_run_steps;
+  run.h = to_double(pr.h_long);
+  std::vector<T> start, scale;
+  for (const auto& inv : pr.invariants) {
+    using std::abs;
+    const T v = inv.value(pr.initial.q, pr.initial.p);
+    start.push_back(v);
+    scale.push_back(inv.scale > 0 ? inv.scale : abs(v) > 0 ? T(abs(v)) : pr.scale);
+  }
+  std::vector<growth_recorder> growth(pr.invariants.size());
+  state<T> x = pr.initial;
+  pr.system.reset_evaluations();
+  auto step = s.make(pr.system);
+  const auto t0 = std::chrono::steady_clock::now();
+  long long done = 0;
+  try {
+    for (long long i = 1; i <= run.steps; ++i) {
+      step(x, pr.h_long);
+      done = i;
+      // Every step of the first 2^9, then 256 evenly spaced samples of each window
+      // [2^w, 2^(w+1)): the windows' RMS (and the growth exponent) are estimated as
+      // well, at a fraction of the cost of evaluating the invariants at every step.
+      const auto stride = static_cast<long long>(
+          std::max(1ULL, std::bit_floor(static_cast<unsigned long long>(i)) >> 8));
+      if (i % stride != 0) continue;
+      for (std::size_t k = 0; k < pr.invariants.size(); ++k) {
+        using std::abs;
+        const T d = abs(T(pr.invariants[k].value(x.q, x.p) - start[k])) / scale[k];
+        growth[k].add(static_cast<long>(i), to_double(d));
+      }
+    }
+  } catch (const std::exception& e) {
+    run.failure = "step " + std::to_string(done + 1) + ": " + e.what();
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (done > 0) {
+    run.evaluations_per_step = static_cast<double>(pr.system.evaluations()) / double(done);
+    if (opt.timing) run.seconds_per_step = seconds / double(done);
+  }
+  // Rounding alone: one rounding per evaluation and per step, as a random walk, with
+  // margin 8: the invariant is preserved by the method when its drift stays below this.
+  const double budget =
+      8 * eps_of<T>() * (run.evaluations_per_step + 1) * std::sqrt(double(std::max(done, 1LL)));
+  for (std::size_t k = 0; k < pr.invariants.size(); ++k) {
+    drift d;
+    d.name = pr.invariants[k].name;
+    d.max_relative = growth[k].max_error();
+    d.budget_relative = budget;
+    d.preserved = run.failure.empty() && d.max_relative <= budget;
+    d.exponent = growth[k].exponent();
+    d.window_rms = growth[k].window_rms();
+    // An error of order one has saturated (the orbit escaped, the angle wrapped): its
+    // growth exponent then says nothing about the method.
+    d.kind = d.preserved               ? "preserved to rounding"
+             : d.max_relative >= 0.25 ? "lost (error of order one)"
+             : d.exponent             ? growth_kind(*d.exponent)
+                                      : "not resolved";
+    run.invariants.push_back(d);
+  }
+  return run;
+}
+
+inline std::string fixed(double x, int digits = 2) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
+  return buf;
+}
+inline std::string sci(double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.2e", x);
+  return buf;
+}
+
+/// A fit that decides a claim: at least two halvings, agreeing within 0.3. In double, a
+/// method of order 6 or 8 can reach the rounding floor before its exponents settle;
+/// such a fit is reported, not judged.
+inline bool settled(const fitted_exponent& f) { return f.used >= 2 && f.spread <= 0.3; }
+
+/// Claims against measurements. The order of a method is its worst case over problems
+/// (a problem can show more: symplectic Euler is of order 2 on the oscillator, and a
+/// fit in double can end before the asymptotic range); the measured order is the least
+/// settled global fit. The declared order p is contradicted when a settled global fit
+/// is below p - 0.25 or a settled local fit below p + 1 - 0.25 (the method is worse than
+/// declared), or when the least settled global fit is above p + 0.75 and every settled
+/// local fit above p + 1.75 (the method is of higher order than declared).
+/// Symplectic and symmetric: the defect within its rounding budget on every problem
+/// measured (claimed true), or above it on one at least (claimed false).
+inline std::vector<verdict> judge(const claims& declared, const std::vector<problem_audit>& ps) {
+  std::vector<verdict> out;
+  using outcome = verdict::outcome;
+  {
+    verdict v;
+    v.claim = "order";
+    v.declared = declared.order ? std::to_string(*declared.order) : "-";
+    std::vector<double> global, local;
+    bool below = false;
+    std::string evidence;
+    const auto describe = [](const char* what, const fitted_exponent& f) {
+      return std::string(what) + " " + fixed(f.value) + " (spread " + fixed(f.spread) + ", " +
+             std::to_string(f.used) + " halvings" + (settled(f) ? ")" : ", not settled)");
+    };
+    const double p = declared.order ? *declared.order : 0;
+    for (const auto& pa : ps) {
+      if (!pa.skipped.empty()) continue;
+      evidence += pa.problem + ": ";
+      if (pa.global.fit.used > 0) {
+        evidence += describe("global", pa.global.fit);
+        if (settled(pa.global.fit)) {
+          global.push_back(pa.global.fit.value);
+          if (declared.order && pa.global.fit.value < p - 0.25) {
+            below = true;
+            evidence += " <- below " + std::to_string(*declared.order);
+          }
+        }
+      } else {
+        evidence += "global not resolved";
+      }
+      if (pa.local.fit.used > 0) {
+        evidence += ", " + describe("local", pa.local.fit);
+        if (settled(pa.local.fit)) {
+          local.push_back(pa.local.fit.value);
+          if (declared.order && pa.local.fit.value < p + 1 - 0.25) {
+            below = true;
+            evidence += " <- below " + std::to_string(*declared.order + 1);
+          }
+        }
+      }
+      evidence += "; ";
+    }
+    const double least = global.empty() ? 0 : *std::min_element(global.begin(), global.end());
+    const bool above = declared.order && !global.empty() && least > p + 0.75 &&
+                       !local.empty() &&
+                       *std::min_element(local.begin(), local.end()) > p + 1.75;
+    if (above) evidence += "every settled fit is above the declared order";
+    v.measured = global.empty() ? "-" : fixed(least);
+    v.evidence = evidence;
+    v.result = global.empty() && local.empty() ? outcome::not_measured
+               : !declared.order              ? outcome::not_declared
+               : below || above               ? outcome::contradicted
+               : global.empty()               ? outcome::not_measured
+                                              : outcome::confirmed;
+    out.push_back(v);
+  }
+  const auto property = [&](const char* name, const std::optional<bool>& claim,
+                            auto member) {
+    verdict v;
+    v.claim = name;
+    v.declared = claim ? (*claim ? "yes" : "no") : "-";
+    bool any = false, all_within = true;
+    std::string evidence;
+    for (const auto& p : ps) {
+      const std::optional<defect_study>& d = p.*member;
+      if (!p.skipped.empty() || !d) continue;
+      any = true;
+      all_within = all_within && d->within_rounding;
+      evidence += p.problem + ": " + sci(d->worst_eps) + " eps (budget " + sci(d->budget_eps) + ")";
+      if (!d->within_rounding && d->exponent.used > 0)
+        evidence += ", ~ h^" + fixed(d->exponent.value, 1);
+      evidence += "; ";
+    }
+    v.measured = !any ? "-" : all_within ? "yes" : "no";
+    v.evidence = evidence;
+    v.result = !any ? outcome::not_measured
+               : !claim ? outcome::not_declared
+               : (*claim == all_within) ? outcome::confirmed
+                                        : outcome::contradicted;
+    out.push_back(v);
+  };
+  property("symplectic", declared.symplectic, &problem_audit::symplectic);
+  property("symmetric", declared.symmetric, &problem_audit::symmetric);
+  return out;
+}
+
+inline bool selected(const std::vector<std::string>& names, const std::string& name) {
+  if (names.empty()) return true;
+  for (const auto& n : names)
+    if (n == name) return true;
+  return false;
+}
+}  // namespace detail
+
+/// Audit a stepper in tier T on the given problems.
+template <class T>
+stepper_audit audit_stepper(const stepper_under_audit<T>& s, const std::vector<problem<T>>& problems,
+                            const audit_options& opt = {}) {
+  const auto t0 = std::chrono::steady_clock::now();
+  stepper_audit out;
+  out.stepper = s.name;
+  out.origin = s.origin;
+  out.tier = std::string(tier_traits<T>::name);
+  out.digits = tier_digits<T>();
+  out.declared = s.declared;
+  for (const auto& pr : problems) {
+    if (!detail::selected(opt.problems, pr.name)) continue;
+    problem_audit pa;
+    pa.problem = pr.name;
+    if (opt.progress) opt.progress(s.name + " [" + out.tier + "] on " + pr.name);
+    // Can the stepper take the problem? One step tells (splitting needs separable H).
+    try {
+      state<T> x = pr.initial;
+      pr.system.reset_evaluations();
+      s.make(pr.system)(x, pr.h_local);
+      pa.evaluations_per_step = static_cast<double>(pr.system.evaluations());
+    } catch (const std::exception& e) {
+      pa.skipped = detail::is_not_separable(e) ? "needs a separable H" : e.what();
+      out.problems.push_back(pa);
+      continue;
+    }
+    pa.global = detail::global_order(s, pr, opt);
+    pa.local = detail::local_order(s, pr, opt);
+    if (pr.canonical && s.make_ad)
+      pa.symplectic = detail::symplectic_condition(s, pr, opt, pa.evaluations_per_step);
+    pa.symmetric = detail::time_symmetry(s, pr, opt, pa.evaluations_per_step);
+    if (detail::selected(opt.long_run_problems, pr.name) && opt.long_run_steps > 0)
+      pa.run = detail::run_long(s, pr, opt);
+    out.problems.push_back(std::move(pa));
+  }
+  out.verdicts = detail::judge(out.declared, out.problems);
+  if (opt.timing)
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+/// Audit a stepper in tier T on every reference problem.
+template <class T>
+stepper_audit audit_stepper(const stepper_under_audit<T>& s, const audit_options& opt = {}) {
+  return audit_stepper(s, reference_problems<T>(), opt);
+}
+
+}  // namespace mechcheck::audit

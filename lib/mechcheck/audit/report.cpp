@@ -1,0 +1,409 @@
+#include "mechcheck/audit/report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+namespace mechcheck::audit {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+std::string format(const char* fmt, double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, x);
+  return buf;
+}
+
+const verdict* find_verdict(const stepper_audit& a, const char* claim) { return a.find(claim); }
+
+/// "4 -> 4.00", "- -> 1.98", with the outcome mark.
+std::string claim_cell(const stepper_audit& a, const char* claim) {
+  const verdict* v = find_verdict(a, claim);
+  if (!v) return "-";
+  std::string cell = v->declared + " / " + v->measured;
+  if (v->result == verdict::outcome::contradicted) cell += " (contradicted)";
+  return cell;
+}
+
+const problem_audit* find_problem(const stepper_audit& a, const std::string& name) {
+  for (const auto& p : a.problems)
+    if (p.problem == name && p.skipped.empty()) return &p;
+  return nullptr;
+}
+
+/// The energy behaviour of the long run on `problem` (or the first problem with a run).
+std::string energy_cell(const stepper_audit& a, const std::string& problem) {
+  const problem_audit* p = find_problem(a, problem);
+  if (!p || !p->run)
+    for (const auto& q : a.problems)
+      if (q.run) {
+        p = &q;
+        break;
+      }
+  if (!p || !p->run || p->run->invariants.empty()) return "-";
+  const drift& e = p->run->invariants.front();
+  std::string cell = e.kind;
+  if (e.exponent && !e.preserved && e.max_relative < 0.25) cell += format(" (t^%.2f)", *e.exponent);
+  if (!p->run->failure.empty()) cell += ", failed: " + p->run->failure;
+  if (p->problem != problem) cell += " [" + p->problem + "]";
+  return cell;
+}
+
+/// Evaluations per step: of the long run where there is one (implicit methods need fewer
+/// once a run is under way), else of the first step.
+std::string evaluations_cell(const stepper_audit& a) {
+  for (const auto& p : a.problems)
+    if (p.run && p.run->evaluations_per_step > 0) return format("%.1f", p.run->evaluations_per_step);
+  for (const auto& p : a.problems)
+    if (p.skipped.empty() && p.evaluations_per_step > 0)
+      return format("%.0f", p.evaluations_per_step);
+  return "-";
+}
+
+std::string verdict_cell(const stepper_audit& a) {
+  bool any = false;
+  for (const auto& v : a.verdicts) any = any || v.result == verdict::outcome::confirmed;
+  if (!a.claims_hold()) return "CONTRADICTED";
+  return any ? "claims hold" : "nothing declared";
+}
+
+json to_json(const study_point& p) { return json::array({p.h, p.error, p.evaluations}); }
+
+json to_json(const fitted_exponent& f) {
+  json j = {{"value", f.value}, {"spread", f.spread}, {"used", f.used}};
+  j["floor_h"] = f.floor_h ? json(*f.floor_h) : json(nullptr);
+  return j;
+}
+
+json to_json(const order_study& s) {
+  json points = json::array();
+  for (const auto& p : s.points) points.push_back(to_json(p));
+  json j = {{"fit", to_json(s.fit)}, {"points", points}};
+  if (!s.note.empty()) j["note"] = s.note;
+  return j;
+}
+
+json to_json(const defect_study& d) {
+  json points = json::array();
+  for (const auto& p : d.points) points.push_back(to_json(p));
+  json j = {{"within_rounding", d.within_rounding},
+            {"worst_eps", d.worst_eps},
+            {"budget_eps", d.budget_eps},
+            {"points", points}};
+  if (!d.within_rounding) j["exponent"] = to_json(d.exponent);
+  return j;
+}
+
+json optional_claim(const std::optional<bool>& c) { return c ? json(*c) : json(nullptr); }
+
+json to_json(const stepper_audit& a, const report_options& opt) {
+  json problems = json::array();
+  for (const auto& p : a.problems) {
+    json jp = {{"problem", p.problem}};
+    if (!p.skipped.empty()) {
+      jp["skipped"] = p.skipped;
+      problems.push_back(jp);
+      continue;
+    }
+    jp["evaluations_per_step"] = p.evaluations_per_step;
+    jp["global_order"] = to_json(p.global);
+    jp["local_order"] = to_json(p.local);
+    if (p.symplectic) jp["symplectic_condition"] = to_json(*p.symplectic);
+    if (p.symmetric) jp["time_symmetry"] = to_json(*p.symmetric);
+    if (p.run) {
+      json inv = json::array();
+      for (const auto& d : p.run->invariants) {
+        json jd = {{"name", d.name},
+                   {"max_relative", d.max_relative},
+                   {"budget_relative", d.budget_relative},
+                   {"preserved", d.preserved},
+                   {"kind", d.kind},
+                   {"window_rms", d.window_rms}};
+        jd["exponent"] = d.exponent ? json(*d.exponent) : json(nullptr);
+        inv.push_back(jd);
+      }
+      json run = {{"steps", p.run->steps},
+                  {"h", p.run->h},
+                  {"evaluations_per_step", p.run->evaluations_per_step},
+                  {"invariants", inv}};
+      if (!p.run->failure.empty()) run["failure"] = p.run->failure;
+      if (opt.timing) run["timing"] = {{"seconds_per_step", p.run->seconds_per_step}};
+      jp["long_run"] = run;
+    }
+    problems.push_back(jp);
+  }
+  json verdicts = json::array();
+  for (const auto& v : a.verdicts)
+    verdicts.push_back({{"claim", v.claim},
+                        {"declared", v.declared},
+                        {"measured", v.measured},
+                        {"result", outcome_name(v.result)},
+                        {"evidence", v.evidence}});
+  json j = {{"stepper", a.stepper},
+            {"origin", a.origin},
+            {"tier", a.tier},
+            {"digits", a.digits},
+            {"declared",
+             {{"order", a.declared.order ? json(*a.declared.order) : json(nullptr)},
+              {"symplectic", optional_claim(a.declared.symplectic)},
+              {"symmetric", optional_claim(a.declared.symmetric)}}},
+            {"claims_hold", a.claims_hold()},
+            {"verdicts", verdicts},
+            {"problems", problems}};
+  if (opt.timing) j["timing"] = {{"seconds", a.seconds}};
+  return j;
+}
+
+std::string escape_xml(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+void write_atomically(const std::filesystem::path& path, const std::string& content) {
+  const std::filesystem::path tmp = path.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw std::runtime_error("write_report: cannot write " + tmp.string());
+    out << content;
+    out.flush();
+    if (!out) throw std::runtime_error("write_report: writing " + tmp.string() + " failed");
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+std::string cell(const std::string& s) {
+  std::string out;
+  for (char c : s) out += c == '|' ? '/' : c;
+  return out;
+}
+
+}  // namespace
+
+std::string outcome_name(verdict::outcome o) {
+  switch (o) {
+    case verdict::outcome::confirmed: return "confirmed";
+    case verdict::outcome::contradicted: return "CONTRADICTED";
+    case verdict::outcome::not_declared: return "not declared";
+    case verdict::outcome::not_measured: return "not measured";
+  }
+  return "?";
+}
+
+void print_table(std::ostream& out, const std::vector<stepper_audit>& audits,
+                 const report_options& opt) {
+  const std::vector<std::string> head = {"stepper", "tier", "order decl/meas", "symplectic",
+                                         "symmetric", "energy (" + opt.long_run_problem + ")",
+                                         "evals/step", "verdict"};
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& a : audits)
+    rows.push_back({a.stepper, a.tier, claim_cell(a, "order"), claim_cell(a, "symplectic"),
+                    claim_cell(a, "symmetric"), energy_cell(a, opt.long_run_problem),
+                    evaluations_cell(a), verdict_cell(a)});
+  std::vector<std::size_t> width(head.size());
+  for (std::size_t c = 0; c < head.size(); ++c) {
+    width[c] = head[c].size();
+    for (const auto& r : rows) width[c] = std::max(width[c], r[c].size());
+  }
+  const auto line = [&](const std::vector<std::string>& r) {
+    for (std::size_t c = 0; c < r.size(); ++c)
+      out << std::left << std::setw(static_cast<int>(width[c])) << r[c]
+          << (c + 1 < r.size() ? "  " : "\n");
+  };
+  line(head);
+  for (const auto& r : rows) line(r);
+  for (const auto& a : audits)
+    for (const auto& v : a.verdicts)
+      if (v.result == verdict::outcome::contradicted)
+        out << a.stepper << " [" << a.tier << "]: " << v.claim << " declared " << v.declared
+            << ", measured " << v.measured << ": " << v.evidence << "\n";
+}
+
+std::string to_json(const std::vector<stepper_audit>& audits, const report_options& opt) {
+  json all = json::array();
+  for (const auto& a : audits) all.push_back(to_json(a, opt));
+  return json({{"audits", all}}).dump(1) + "\n";
+}
+
+std::string to_markdown(const std::vector<stepper_audit>& audits, const report_options& opt) {
+  std::ostringstream md;
+  md << "# Integrator audit\n\n"
+     << "Order: declared / measured (median of the settled global fits). Symplectic and "
+        "symmetric: declared / measured. Energy: growth of the energy error over the long "
+        "run on "
+     << opt.long_run_problem << ".\n\n"
+     << "| stepper | tier | order | symplectic | symmetric | energy | evals/step | verdict |\n"
+     << "|---|---|---|---|---|---|---|---|\n";
+  for (const auto& a : audits)
+    md << "| " << cell(a.stepper) << " | " << a.tier << " | " << cell(claim_cell(a, "order"))
+       << " | " << cell(claim_cell(a, "symplectic")) << " | "
+       << cell(claim_cell(a, "symmetric")) << " | " << cell(energy_cell(a, opt.long_run_problem))
+       << " | " << evaluations_cell(a) << " | " << verdict_cell(a) << " |\n";
+  md << "\n## Evidence\n";
+  for (const auto& a : audits) {
+    md << "\n### " << a.stepper << " [" << a.tier << "]\n\n";
+    if (!a.origin.empty()) md << "Claims from " << a.origin << ".\n\n";
+    for (const auto& v : a.verdicts)
+      md << "- **" << v.claim << "**: declared " << v.declared << ", measured " << v.measured
+         << ", " << outcome_name(v.result) << ". " << v.evidence << "\n";
+    for (const auto& p : a.problems) {
+      if (!p.skipped.empty()) {
+        md << "- " << p.problem << ": skipped (" << p.skipped << ")\n";
+        continue;
+      }
+      if (!p.run) continue;
+      md << "- " << p.problem << ", " << p.run->steps << " steps of h = "
+         << format("%.4g", p.run->h) << ":";
+      for (const auto& d : p.run->invariants)
+        md << " " << d.name << " " << d.kind << " (max " << format("%.2e", d.max_relative)
+           << (d.exponent && !d.preserved ? format(", t^%.2f", *d.exponent) : "") << ");";
+      if (!p.run->failure.empty()) md << " failed at " << p.run->failure;
+      md << "\n";
+    }
+  }
+  if (opt.timing) {
+    md << "\n## Timing\n\n| stepper | tier | audit seconds | seconds per step (" +
+              opt.long_run_problem + ") |\n|---|---|---|---|\n";
+    for (const auto& a : audits) {
+      const problem_audit* p = find_problem(a, opt.long_run_problem);
+      md << "| " << a.stepper << " | " << a.tier << " | " << format("%.2f", a.seconds) << " | "
+         << (p && p->run ? format("%.3g", p->run->seconds_per_step) : "-") << " |\n";
+    }
+  }
+  return md.str();
+}
+
+std::string svg_loglog(const std::string& title, const std::string& x_label,
+                       const std::string& y_label, const std::vector<plot_series>& series) {
+  const double W = 720, H = 480, left = 80, right = 230, top = 40, bottom = 60;
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  for (const auto& s : series)
+    for (const auto& [x, y] : s.points)
+      if (x > 0 && y > 0 && std::isfinite(x) && std::isfinite(y)) {
+        x0 = std::min(x0, std::log10(x));
+        x1 = std::max(x1, std::log10(x));
+        y0 = std::min(y0, std::log10(y));
+        y1 = std::max(y1, std::log10(y));
+      }
+  if (!(x0 <= x1)) x0 = 0, x1 = 1, y0 = 0, y1 = 1;
+  x0 = std::floor(x0), x1 = std::ceil(x1 == x0 ? x0 + 1 : x1);
+  y0 = std::floor(y0), y1 = std::ceil(y1 == y0 ? y0 + 1 : y1);
+  const double pw = W - left - right, ph = H - top - bottom;
+  const auto X = [&](double x) { return left + (std::log10(x) - x0) / (x1 - x0) * pw; };
+  const auto Y = [&](double y) { return top + (y1 - std::log10(y)) / (y1 - y0) * ph; };
+  static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
+                                  "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+  std::ostringstream s;
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
+    << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+    << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+    << "<text x=\"" << left << "\" y=\"24\" font-size=\"15\">" << escape_xml(title) << "</text>\n";
+  const int ystep = std::max(1, static_cast<int>((y1 - y0) / 10));
+  for (double d = x0; d <= x1; d += 1) {
+    const double x = left + (d - x0) / (x1 - x0) * pw;
+    s << "<line x1=\"" << x << "\" y1=\"" << top << "\" x2=\"" << x << "\" y2=\"" << top + ph
+      << "\" stroke=\"#ddd\"/><text x=\"" << x << "\" y=\"" << top + ph + 18
+      << "\" text-anchor=\"middle\">1e" << d << "</text>\n";
+  }
+  for (double d = y0; d <= y1; d += ystep) {
+    const double y = top + (y1 - d) / (y1 - y0) * ph;
+    s << "<line x1=\"" << left << "\" y1=\"" << y << "\" x2=\"" << left + pw << "\" y2=\"" << y
+      << "\" stroke=\"#ddd\"/><text x=\"" << left - 6 << "\" y=\"" << y + 4
+      << "\" text-anchor=\"end\">1e" << d << "</text>\n";
+  }
+  s << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw << "\" height=\"" << ph
+    << "\" fill=\"none\" stroke=\"black\"/>\n"
+    << "<text x=\"" << left + pw / 2 << "\" y=\"" << H - 16 << "\" text-anchor=\"middle\">"
+    << escape_xml(x_label) << "</text>\n"
+    << "<text transform=\"translate(20," << top + ph / 2 << ") rotate(-90)\" text-anchor=\"middle\">"
+    << escape_xml(y_label) << "</text>\n";
+  for (std::size_t k = 0; k < series.size(); ++k) {
+    const char* c = colours[k % 10];
+    std::string path;
+    std::ostringstream marks;
+    for (const auto& [x, y] : series[k].points) {
+      if (!(x > 0 && y > 0 && std::isfinite(x) && std::isfinite(y))) continue;
+      path += format("%.1f,", X(x)) + format("%.1f ", Y(y));
+      marks << "<circle cx=\"" << format("%.1f", X(x)) << "\" cy=\"" << format("%.1f", Y(y))
+            << "\" r=\"2.5\" fill=\"" << c << "\"/>";
+    }
+    s << "<polyline fill=\"none\" stroke=\"" << c << "\" stroke-width=\"1.5\" points=\"" << path
+      << "\"/>" << marks.str() << "\n";
+    const double ly = top + 14 + 16 * static_cast<double>(k);
+    s << "<line x1=\"" << left + pw + 12 << "\" y1=\"" << ly - 4 << "\" x2=\"" << left + pw + 32
+      << "\" y2=\"" << ly - 4 << "\" stroke=\"" << c << "\" stroke-width=\"2\"/><text x=\""
+      << left + pw + 38 << "\" y=\"" << ly << "\">" << escape_xml(series[k].name) << "</text>\n";
+  }
+  s << "</svg>\n";
+  return s.str();
+}
+
+std::vector<std::string> write_report(const std::string& directory,
+                                      const std::vector<stepper_audit>& audits,
+                                      const report_options& opt) {
+  namespace fs = std::filesystem;
+  const fs::path dir(directory);
+  fs::create_directories(dir);
+  std::vector<std::string> written;
+  const auto put = [&](const std::string& name, const std::string& content) {
+    write_atomically(dir / name, content);
+    written.push_back((dir / name).string());
+  };
+  put("audit.json", to_json(audits, opt));
+  put("audit.md", to_markdown(audits, opt));
+  std::map<std::string, std::vector<const stepper_audit*>> by_tier;
+  for (const auto& a : audits) by_tier[a.tier].push_back(&a);
+  const std::string& pr = opt.long_run_problem;
+  for (const auto& [tier, list] : by_tier) {
+    std::vector<plot_series> convergence, energy, work;
+    for (const stepper_audit* a : list) {
+      const problem_audit* p = find_problem(*a, pr);
+      if (!p) continue;
+      plot_series c{a->stepper, {}}, w{a->stepper, {}};
+      if (p->global.fit.used > 0) c.name += format(" (slope %.2f)", p->global.fit.value);
+      for (const auto& pt : p->global.points) {
+        c.points.emplace_back(pt.h, pt.error);
+        w.points.emplace_back(pt.evaluations, pt.error);
+      }
+      convergence.push_back(c);
+      work.push_back(w);
+      if (p->run && !p->run->invariants.empty()) {
+        plot_series e{a->stepper, {}};
+        const auto& rms = p->run->invariants.front().window_rms;
+        for (std::size_t k = 0; k < rms.size(); ++k)
+          e.points.emplace_back(p->run->h * std::ldexp(1.5, static_cast<int>(k)), rms[k]);
+        energy.push_back(e);
+      }
+    }
+    put("convergence-" + tier + ".svg",
+        svg_loglog("Global error at t_end, " + pr + ", " + tier, "step h",
+                   "|error| / scale", convergence));
+    put("energy-" + tier + ".svg",
+        svg_loglog("Energy error over the long run, " + pr + ", " + tier, "time t",
+                   "RMS |E - E0| / |E0| in windows [2^w, 2^(w+1)) steps", energy));
+    put("work-precision-" + tier + ".svg",
+        svg_loglog("Work against precision, " + pr + ", " + tier, "force / vector-field evaluations",
+                   "|error| / scale at t_end", work));
+  }
+  return written;
+}
+
+}  // namespace mechcheck::audit

@@ -1,0 +1,129 @@
+#pragma once
+/// The options and results of an audit as plain values (no Eigen, no tiers): what
+/// audit_stepper takes and returns, and audit/report.hpp prints, writes and plots.
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mechcheck::audit {
+
+/// Options of an audit.
+struct audit_options {
+  std::vector<std::string> problems;           ///< names to audit on; empty: all
+  std::vector<std::string> long_run_problems;  ///< names for the long run; empty: all
+  long long long_run_steps = 100000;           ///< steps of the long run (>= 10^5)
+  long long max_study_steps = 1 << 14;         ///< largest run of the global study
+  int max_local_halvings = 48;                 ///< halvings of the one-step studies
+  bool timing = true;                          ///< measure time per step (not reproducible)
+  std::function<void(const std::string&)> progress;  ///< called as the audit goes
+};
+
+/// One point of a study: the step (or time) and the error there.
+struct study_point {
+  double h = 0;
+  double error = 0;
+  double evaluations = 0;  ///< force or vector-field evaluations it took (0 if not counted)
+};
+
+/// The exponent fitted over the asymptotic range of a study.
+struct fitted_exponent {
+  double value = 0;   ///< median of the last (up to) three exponents above the floor
+  double spread = 0;  ///< max - min of those exponents
+  int used = 0;       ///< how many exponents (halvings) entered the fit; 0: none resolvable
+  std::optional<double> floor_h;  ///< the first h whose error was at the rounding floor
+};
+
+/// What a stepper declares; an empty optional is "not declared".
+struct claims {
+  std::optional<int> order;
+  std::optional<bool> symplectic;
+  std::optional<bool> symmetric;
+};
+
+/// A convergence study: its points and the fitted exponent.
+struct order_study {
+  std::vector<study_point> points;
+  fitted_exponent fit;
+  std::string note;  ///< why points are missing (a step that threw), if any
+};
+
+/// A defect that is zero for the claimed property: within its rounding budget, or
+/// growing as a power of h.
+struct defect_study {
+  bool within_rounding = false;
+  double worst_eps = 0;   ///< the largest defect at the tested steps, in eps x scale
+  double budget_eps = 0;  ///< the rounding budget, in eps x scale
+  std::vector<study_point> points;  ///< defect against h (when not within rounding)
+  fitted_exponent exponent;
+};
+
+/// The drift of a conserved quantity over the long run, relative to its scale.
+struct drift {
+  std::string name;
+  double max_relative = 0;
+  double budget_relative = 0;  ///< rounding budget: preserved when max_relative <= it
+  bool preserved = false;
+  std::optional<double> exponent;  ///< growth exponent of the drift with time
+  std::string kind;                ///< "preserved to rounding", "bounded", ...
+  std::vector<double> window_rms;  ///< RMS drift in windows of steps [2^w, 2^(w+1))
+};
+
+/// The long run of a stepper on a problem.
+struct long_run {
+  long long steps = 0;
+  double h = 0;
+  std::vector<drift> invariants;  ///< the energy first
+  double evaluations_per_step = 0;
+  double seconds_per_step = 0;    ///< 0 when timing is off
+  std::string failure;            ///< a step that threw, if any
+};
+
+/// Everything measured on one problem.
+struct problem_audit {
+  std::string problem;
+  std::string skipped;  ///< non-empty: the stepper cannot take this problem (and why)
+  order_study global;
+  order_study local;
+  std::optional<defect_study> symplectic;  ///< canonical problems, AD-capable steppers
+  std::optional<defect_study> symmetric;
+  std::optional<long_run> run;
+  double evaluations_per_step = 0;
+};
+
+/// A claim and its outcome.
+struct verdict {
+  enum class outcome { confirmed, contradicted, not_declared, not_measured };
+  std::string claim;
+  std::string declared;
+  std::string measured;
+  std::string evidence;
+  outcome result = outcome::not_measured;
+};
+
+/// The audit of one stepper in one tier.
+struct stepper_audit {
+  std::string stepper;
+  std::string origin;  ///< where the stepper and its claims come from (e.g. a header)
+  std::string tier;
+  int digits = 0;
+  claims declared;
+  std::vector<problem_audit> problems;
+  std::vector<verdict> verdicts;
+  double seconds = 0;  ///< wall time of the audit (0 when timing is off)
+
+  /// True when no declared claim is contradicted.
+  bool claims_hold() const {
+    for (const auto& v : verdicts)
+      if (v.result == verdict::outcome::contradicted) return false;
+    return true;
+  }
+  const verdict* find(const std::string& claim) const {
+    for (const auto& v : verdicts)
+      if (v.claim == claim) return &v;
+    return nullptr;
+  }
+};
+
+}  // namespace mechcheck::audit

@@ -1,0 +1,139 @@
+#pragma once
+/// Convergence and growth studies: how an error scales with the step h or with time.
+///
+/// Truncation model e(h) = C h^p (1 + O(h)): halving h divides e by 2^p, so successive
+/// errors give the exponent log2(e(h) / e(h/2)). A study halves h until the errors reach
+/// the tier's rounding floor (or a cost limit), and fits the exponent over the last
+/// halvings above the floor: the asymptotic range, where pre-asymptotic terms have died
+/// out and rounding has not yet set in. An error that stops falling (a method converging
+/// to the wrong flow, coefficients right only to some lower precision) shows there as an
+/// exponent that drops towards 0.
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mechcheck/audit/result.hpp"
+#include "mechcheck/core.hpp"
+
+namespace mechcheck::audit {
+
+/// Convergence study for a truncation model e(h) = C h^p (1 + O(h)), stopping early:
+/// halve h from h0 until the fitted exponent log2(e(h)/e(h/2)) is within 0.4 of p
+/// (pre-asymptotic terms have died out), or until e(h/2) falls to 10^4 eps * floor_scale,
+/// where rounding (some 10^2 eps accumulated over the steps) would move the exponent by
+/// more than 0.01 (at most 6 halvings). Returns the fitted exponent, or nothing when the
+/// floor came first: only a method whose errors are tiny, as a correct high-order one's
+/// are, gets there, while a broken one settles on its lower order and fails.
+template <class T, class Error>
+std::optional<T> converged_exponent(Error&& error, T h, int p, const T& floor_scale) {
+  using std::abs;
+  using std::log2;
+  T e1 = error(h);
+  for (int halving = 0; halving < 6; ++halving) {
+    const T e2 = error(T(h / 2));
+    const T fitted = log2(e1 / e2);
+    if (abs(T(fitted - p)) <= T(0.4)) return fitted;
+    // Below the floor the exponent is rounding's, not the method's: unresolvable here.
+    if (e2 < T(1e4) * tier_epsilon<T>() * floor_scale) return std::nullopt;
+    h /= 2;
+    e1 = e2;
+  }
+  return T(log2(e1 / error(T(h / 2))));
+}
+
+/// Number of steps of size h in a unit of time (h from a halving study: 1/h is whole).
+template <class T>
+long steps_for(const T& h) {
+  using std::round;
+  return static_cast<long>(static_cast<double>(round(T(1 / h))));
+}
+
+/// Fits the exponent of points[i].error ~ h^p over a halving sequence (h_{i+1} = h_i / 2).
+/// A halving enters the fit when both errors exceed `resolvable` (a multiple of the
+/// rounding floor, so that rounding moves the exponent by at most ~0.01). The fit is the
+/// median of the last three such exponents: the most asymptotic ones, and a drop at the
+/// end (an error that stops falling) is not averaged away.
+inline fitted_exponent fit_halvings(const std::vector<study_point>& points, double resolvable) {
+  fitted_exponent out;
+  std::vector<double> exponents;
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+    const double a = points[i].error, b = points[i + 1].error;
+    if (!(a > resolvable && b > resolvable)) {
+      if (!out.floor_h && !(b > resolvable)) out.floor_h = points[i + 1].h;
+      continue;
+    }
+    exponents.push_back(std::log2(a / b) / std::log2(points[i].h / points[i + 1].h));
+  }
+  if (exponents.empty()) return out;
+  const std::size_t k = std::min<std::size_t>(3, exponents.size());
+  std::vector<double> last(exponents.end() - static_cast<long>(k), exponents.end());
+  std::sort(last.begin(), last.end());
+  out.value = last[k / 2];
+  if (k == 2) out.value = (last[0] + last[1]) / 2;
+  out.spread = last.back() - last.front();
+  out.used = static_cast<int>(k);
+  return out;
+}
+
+/// Growth of an error with time: the exponent g of rms(error) ~ t^g over logarithmic
+/// windows of steps [2^w, 2^(w+1)), by least squares on log-log axes. 0 is bounded,
+/// 1/2 a random walk (rounding: Brouwer's law), 1 a linear drift.
+class growth_recorder {
+ public:
+  /// Record the error after step `step` (counted from 1).
+  void add(long step, double error) {
+    const int w = static_cast<int>(std::floor(std::log2(static_cast<double>(step))));
+    if (static_cast<int>(sum_.size()) <= w) {
+      sum_.resize(w + 1, 0.0);
+      count_.resize(w + 1, 0.0);
+    }
+    sum_[w] += error * error;
+    count_[w] += 1;
+    max_ = std::max(max_, std::abs(error));
+    last_ = std::abs(error);
+  }
+  /// Least-squares slope of log(rms) against log(t) over the windows from 2^first on
+  /// (the first windows hold few samples). Nothing when fewer than three windows have a
+  /// non-zero error.
+  std::optional<double> exponent(int first = 6) const {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
+    for (int w = first; w < static_cast<int>(sum_.size()); ++w) {
+      if (count_[w] == 0 || sum_[w] == 0) continue;
+      const double lt = std::log(std::ldexp(1.5, w)), ly = 0.5 * std::log(sum_[w] / count_[w]);
+      sx += lt;
+      sy += ly;
+      sxx += lt * lt;
+      sxy += lt * ly;
+      n += 1;
+    }
+    if (n < 3) return std::nullopt;
+    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  }
+  /// The RMS error of each window w = 0, 1, ... (0 where none was recorded).
+  std::vector<double> window_rms() const {
+    std::vector<double> out(sum_.size(), 0.0);
+    for (std::size_t w = 0; w < sum_.size(); ++w)
+      if (count_[w] > 0) out[w] = std::sqrt(sum_[w] / count_[w]);
+    return out;
+  }
+  double max_error() const { return max_; }
+  double last_error() const { return last_; }
+
+ private:
+  std::vector<double> sum_, count_;
+  double max_ = 0, last_ = 0;
+};
+
+/// Words for a growth exponent g: "bounded" (g < 1/4), "random walk" (< 3/4), "linear
+/// drift" (< 3/2), otherwise "faster than linear".
+inline std::string growth_kind(double g) {
+  if (g < 0.25) return "bounded";
+  if (g < 0.75) return "random walk";
+  if (g < 1.5) return "linear drift";
+  return "faster than linear";
+}
+
+}  // namespace mechcheck::audit
