@@ -1,0 +1,30 @@
+#pragma once
+// The stepper families of mechcheck-audit, one translation unit per family and tier
+// (so that the command's build runs in parallel and a change to one family rebuilds one).
+
+#include <string>
+#include <vector>
+
+#include "mechcheck/audit/result.hpp"
+
+namespace mechcheck::audit_tool {
+
+/// Which steppers of a family to audit, and how.
+struct request {
+  std::vector<std::string> patterns;  ///< shell patterns on stepper names; empty: all
+  audit::audit_options options;
+  bool list_only = false;  ///< only name the steppers (no audit)
+};
+
+/// What a family returns: the names it has (matching) and their audits.
+struct family_result {
+  std::vector<std::string> names;
+  std::vector<audit::stepper_audit> audits;
+};
+
+family_result builtin_double(const request& r);
+family_result builtin_mpfr50(const request& r);
+family_result odeint_double(const request& r);
+family_result odeint_mpfr50(const request& r);
+
+}  // namespace mechcheck::audit_tool

@@ -1,0 +1,125 @@
+// mechcheck-audit: audits the library's steppers and Boost.Odeint's on the reference
+// problems, prints a table and writes audit.json, audit.md and SVG plots.
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fnmatch.h>
+
+#include "families.hpp"
+#include "mechcheck/audit/report.hpp"
+
+namespace {
+using namespace mechcheck;
+using clock_type = std::chrono::steady_clock;
+
+const std::vector<std::string> known_problems = {"oscillator", "kepler_e0.5", "kepler_e0.9",
+                                                 "pendulum",   "free_top",    "twist"};
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"mechcheck-audit: order, symplecticity, time symmetry, long-time energy "
+               "behaviour, first integrals and cost of one-step integrators, against what "
+               "they declare"};
+  std::vector<std::string> steppers, problems, tiers = {"double", "mpfr50"};
+  std::vector<std::string> long_run_problems = {"kepler_e0.5"};
+  long long long_run_steps = 100000, long_run_steps_mpfr50 = 10000;
+  std::string output = "audit";
+  std::vector<std::string> require;
+  bool timing = false, list = false, quiet = false;
+  app.add_option("-s,--stepper", steppers,
+                 "steppers to audit, as shell patterns on their names "
+                 "(e.g. 'mechcheck::*', 'odeint::runge_kutta4'); default all");
+  app.add_option("-p,--problem", problems, "reference problems; default all")
+      ->check(CLI::IsMember(known_problems));
+  app.add_option("-t,--tier", tiers, "tiers: double, mpfr50")
+      ->check(CLI::IsMember({"double", "mpfr50"}));
+  app.add_option("--long-run-problem", long_run_problems, "problems of the long run")
+      ->check(CLI::IsMember(known_problems));
+  app.add_option("--long-run-steps", long_run_steps, "steps of the long run in double (0: none)")
+      ->check(CLI::Range(0LL, 100000000LL));
+  app.add_option("--long-run-steps-mpfr50", long_run_steps_mpfr50,
+                 "steps of the long run in mpfr50 (0: none); its rounding is 1e-50, so the "
+                 "run shows truncation behaviour only, and an implicit step costs ~1 ms")
+      ->check(CLI::Range(0LL, 100000000LL));
+  app.add_option("-o,--output", output, "directory for audit.json, audit.md and the plots");
+  app.add_flag("--timing", timing, "put wall times into the files (not reproducible)");
+  app.add_flag("--list", list, "list the steppers and exit");
+  app.add_option("--require", require,
+                 "exit with status 2 when a claim of a stepper matching this pattern is "
+                 "contradicted (e.g. 'mechcheck::*'; '*' for all)");
+  app.add_flag("-q,--quiet", quiet, "no progress on stderr");
+  CLI11_PARSE(app, argc, argv);
+
+  const auto start = clock_type::now();
+  const auto elapsed = [&] {
+    return std::chrono::duration<double>(clock_type::now() - start).count();
+  };
+  audit_tool::request request;
+  request.patterns = steppers;
+  request.list_only = list;
+  request.options.problems = problems;
+  request.options.long_run_problems = long_run_problems;
+  request.options.long_run_steps = long_run_steps;
+  request.options.timing = true;
+  if (!quiet)
+    request.options.progress = [&](const std::string& what) {
+      std::fprintf(stderr, "[%7.1f s] %s\n", elapsed(), what.c_str());
+    };
+
+  std::vector<audit::stepper_audit> audits;
+  std::vector<std::string> names;
+  for (const auto& tier : tiers) {
+    const double t0 = elapsed();
+    request.options.long_run_steps = tier == "double" ? long_run_steps : long_run_steps_mpfr50;
+    const auto families = tier == "double"
+                              ? std::vector{audit_tool::builtin_double(request),
+                                            audit_tool::odeint_double(request)}
+                              : std::vector{audit_tool::builtin_mpfr50(request),
+                                            audit_tool::odeint_mpfr50(request)};
+    for (const auto& f : families) {
+      for (const auto& n : f.names) names.push_back(n + " [" + tier + "]");
+      audits.insert(audits.end(), f.audits.begin(), f.audits.end());
+    }
+    if (!quiet && !list)
+      std::fprintf(stderr, "[%7.1f s] %s done in %.1f s\n", elapsed(), tier.c_str(),
+                   elapsed() - t0);
+  }
+  if (names.empty()) {
+    std::cerr << "mechcheck-audit: no stepper matches the patterns given (--list names them)\n";
+    return 1;
+  }
+  if (list) {
+    for (const auto& n : names) std::cout << n << "\n";
+    return 0;
+  }
+  audit::report_options report;
+  report.timing = timing;
+  if (!long_run_problems.empty()) report.long_run_problem = long_run_problems.front();
+  audit::print_table(std::cout, audits, report);
+  try {
+    const auto written = audit::write_report(output, audits, report);
+    std::cout << "\nwrote";
+    for (const auto& w : written) std::cout << " " << w;
+    std::cout << "\n";
+  } catch (const std::exception& e) {
+    std::cerr << "mechcheck-audit: " << e.what() << "\n";
+    return 1;
+  }
+  std::cout << "audited " << audits.size() << " stepper-tier pairs in "
+            << static_cast<long>(elapsed() + 0.5) << " s\n";
+  int status = 0;
+  for (const auto& a : audits)
+    for (const auto& pattern : require)
+      if (!a.claims_hold() && fnmatch(pattern.c_str(), a.stepper.c_str(), 0) == 0) {
+        std::cerr << "mechcheck-audit: " << a.stepper << " [" << a.tier
+                  << "]: a declared claim is contradicted (see the table)\n";
+        status = 2;
+        break;
+      }
+  return status;
+}
