@@ -26,6 +26,11 @@ json to_json(const law_result& r) {
   j["rms_residual_eps"] = r.rms_residual_eps;
   j["budget_eps"] = r.budget_eps;
   j["worst_check"] = r.worst_check;
+  if (r.exponent_checks > 0)
+    j["exponent"] = {{"checks", r.exponent_checks},
+                     {"min_deviation", r.exponent_min_deviation},
+                     {"max_deviation", r.exponent_max_deviation},
+                     {"tolerance", r.exponent_tolerance}};
   j["base_seed"] = r.base_seed;
   j["seed"] = r.seed;
   j["reproduce"] = r.reproduce;
@@ -50,6 +55,13 @@ law_result from_json(const json& j) {
   r.rms_residual_eps = j.at("rms_residual_eps");
   r.budget_eps = j.at("budget_eps");
   r.worst_check = j.at("worst_check");
+  if (j.contains("exponent")) {
+    const json& e = j.at("exponent");
+    r.exponent_checks = e.at("checks");
+    r.exponent_min_deviation = e.at("min_deviation");
+    r.exponent_max_deviation = e.at("max_deviation");
+    r.exponent_tolerance = e.at("tolerance");
+  }
   r.base_seed = j.at("base_seed");
   r.seed = j.at("seed");
   r.reproduce = j.at("reproduce");
@@ -72,6 +84,21 @@ std::string number(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, x != 0 && (x < 0.01 || x >= 1e6) ? "%.2e" : "%.2f", x);
   return buf;
+}
+
+/// "-0.03..+0.05 (±0.4)": the fitted exponents against their truncation model; "-" when
+/// the law fits none.
+std::string exponent_cell(const law_result& r) {
+  if (r.exponent_checks == 0) return "-";
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%+.2f..%+.2f (±%.1f)", r.exponent_min_deviation,
+                r.exponent_max_deviation, r.exponent_tolerance);
+  return buf;
+}
+
+/// An eps figure, or "-" for a law with no exact check (truncation models only).
+std::string eps_cell(const law_result& r, double x) {
+  return r.budget_eps == 0 && r.exponent_checks > 0 ? "-" : number(x);
 }
 
 std::string verdict(const law_result& r) {
@@ -119,15 +146,18 @@ void write_report(const std::vector<law_result>& rows, const std::filesystem::pa
   std::ostringstream md;
   md << "# Law report\n\n"
      << "Residuals are in units of the tier's epsilon times the law's natural scale; the "
-        "budget is the tolerance the law derives from its computation.\n\n"
-     << "| law | title | eqs | tier | digits | cases | max eps | RMS eps | budget | result |\n"
-     << "|---|---|---|---|---:|---:|---:|---:|---:|---|\n";
+        "budget is the tolerance the law derives from its computation. Truncation-model "
+        "laws give the range of fitted exponent minus the model's, and its tolerance.\n\n"
+     << "| law | title | eqs | tier | digits | cases | max eps | RMS eps | budget | "
+        "exponent - model | result |\n"
+     << "|---|---|---|---|---:|---:|---:|---:|---:|---|---|\n";
   for (const auto& r : rows) {
     if (r.info.expect != expectation::holds) continue;
     md << "| " << r.info.id << " | " << r.info.title << " | " << join(r.info.equations, ", ")
        << " | " << r.tier << " | " << r.digits << " | " << r.cases << " | "
-       << number(r.max_residual_eps) << " | " << number(r.rms_residual_eps) << " | "
-       << number(r.budget_eps) << " | " << verdict(r) << " |\n";
+       << eps_cell(r, r.max_residual_eps) << " | " << eps_cell(r, r.rms_residual_eps) << " | "
+       << eps_cell(r, r.budget_eps) << " | " << exponent_cell(r) << " | " << verdict(r)
+       << " |\n";
   }
   md << "\n## Errata of the notes\n\n"
      << "Each printed form is falsified by a property; its shrunk counterexample is the "
@@ -156,18 +186,20 @@ std::string format_table(const std::vector<law_result>& rows) {
   const auto row = [&](const std::string& id, const std::string& title, const std::string& eq,
                        const std::string& tier, const std::string& cases, const std::string& mx,
                        const std::string& rms, const std::string& budget,
-                       const std::string& result) {
-    std::snprintf(line, sizeof line, "%-*s  %-*s  %-*s  %-8s  %6s  %10s  %10s  %10s  %s\n",
+                       const std::string& exponent, const std::string& result) {
+    std::snprintf(line, sizeof line, "%-*s  %-*s  %-*s  %-8s  %6s  %10s  %10s  %10s  %-20s  %s\n",
                   static_cast<int>(wid), id.c_str(), static_cast<int>(wtitle),
                   title.substr(0, 48).c_str(), static_cast<int>(weq), eq.c_str(), tier.c_str(),
-                  cases.c_str(), mx.c_str(), rms.c_str(), budget.c_str(), result.c_str());
+                  cases.c_str(), mx.c_str(), rms.c_str(), budget.c_str(), exponent.c_str(),
+                  result.c_str());
     os << line;
   };
-  row("law", "title", "eqs", "tier", "cases", "max eps", "rms eps", "budget", "result");
+  row("law", "title", "eqs", "tier", "cases", "max eps", "rms eps", "budget",
+      "exponent - model", "result");
   for (const auto& r : rows)
     row(r.info.id, r.info.title, join(r.info.equations, ","), r.tier, std::to_string(r.cases),
-        number(r.max_residual_eps), number(r.rms_residual_eps), number(r.budget_eps),
-        verdict(r));
+        eps_cell(r, r.max_residual_eps), eps_cell(r, r.rms_residual_eps),
+        eps_cell(r, r.budget_eps), exponent_cell(r), verdict(r));
   return os.str();
 }
 

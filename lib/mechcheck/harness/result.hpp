@@ -42,6 +42,10 @@ struct law_result {
   double rms_residual_eps = 0;  ///< RMS over cases of the worst check
   double budget_eps = 0;        ///< the largest tolerance a check allowed, in eps * scale
   std::string worst_check;      ///< the check that gave max_residual_eps
+  int exponent_checks = 0;      ///< fitted exponents checked against a truncation model
+  double exponent_min_deviation = 0;  ///< least fitted - model over those checks
+  double exponent_max_deviation = 0;  ///< largest fitted - model
+  double exponent_tolerance = 0;      ///< the allowed |fitted - model|
   std::uint64_t base_seed = 0;
   std::uint64_t seed = 0;
   std::string counterexample;  ///< shrunk counterexample, one "value" per line

@@ -90,6 +90,10 @@ law_result make_result(const law_info& info, const std::string& tier, int digits
   r.rms_residual_eps = rec.rms_eps();
   r.budget_eps = rec.budget_eps();
   r.worst_check = rec.worst();
+  r.exponent_checks = rec.exponent_checks();
+  r.exponent_min_deviation = rec.exponent_min_deviation();
+  r.exponent_max_deviation = rec.exponent_max_deviation();
+  r.exponent_tolerance = rec.exponent_tolerance();
   r.cases = rec.cases();
   {
     std::ostringstream cmd;
