@@ -1,4 +1,5 @@
-# mechcheck_add_laws(<target> SOURCES <law files...> [BASE_DIR <dir>] [GROUPING law|family])
+# mechcheck_add_laws(<target> SOURCES <law files...> [BASE_DIR <dir>] [GROUPING law|family]
+#                    [TIERS <double float128 mpfr50>])
 #
 # Adds law files to a property executable, compiled once per precision tier: each tier's
 # translation unit defines MECHCHECK_LAW_TIER and includes the law file, so the three
@@ -8,8 +9,10 @@
 #   GROUPING family  one translation unit per directory (family) and tier: the laws of a
 #                    family share their instantiations, so a clean build is faster
 #                    (law files of one family must not reuse a name at file scope).
+#   TIERS            the tiers to compile (default all three; a law registers only in the
+#                    tiers compiled).
 function(mechcheck_add_laws target)
-  cmake_parse_arguments(ARG "" "BASE_DIR;GROUPING" "SOURCES" ${ARGN})
+  cmake_parse_arguments(ARG "" "BASE_DIR;GROUPING" "SOURCES;TIERS" ${ARGN})
   if(NOT ARG_GROUPING)
     set(ARG_GROUPING law)
   endif()
@@ -17,6 +20,14 @@ function(mechcheck_add_laws target)
     set(ARG_BASE_DIR ${CMAKE_CURRENT_SOURCE_DIR})
   endif()
   set(tiers double float128 mpfr50)
+  if(ARG_TIERS)
+    foreach(tier IN LISTS ARG_TIERS)
+      if(NOT tier IN_LIST tiers)
+        message(FATAL_ERROR "mechcheck_add_laws: unknown tier '${tier}' (double, float128, mpfr50)")
+      endif()
+    endforeach()
+    set(tiers ${ARG_TIERS})
+  endif()
   set(type_double double)
   set(type_float128 ::mechcheck::float128)
   set(type_mpfr50 ::mechcheck::mpfr50)

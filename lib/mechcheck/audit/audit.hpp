@@ -445,7 +445,8 @@ inline bool selected(const std::vector<std::string>& names, const std::string& n
 
 /// Audit a stepper in tier T on the given problems.
 template <class T>
-stepper_audit audit_stepper(const stepper_under_audit<T>& s, const std::vector<problem<T>>& problems,
+stepper_audit audit_stepper(const stepper_under_audit<T>& s,
+                            const std::vector<problem<T>>& problems,
                             const audit_options& opt = {}) {
   const auto t0 = std::chrono::steady_clock::now();
   stepper_audit out;

@@ -156,7 +156,8 @@ step_function<S> make_symplectic(const erased_system<T>& system) {
 /// velocity_verlet on (x, v) with v = V p, V the (constant) matrix of the velocity map.
 template <class S, class T>
 step_function<S> make_velocity_verlet(const erased_system<T>& system, Eigen::Index n) {
-  if (!system.separable()) throw domain_error("odeint velocity_verlet: the system is not separable");
+  if (!system.separable())
+    throw domain_error("odeint velocity_verlet: the system is not separable");
   // V column by column; linear when V (e_0 + ... + e_{n-1}) is the sum of the columns.
   dynamic_matrix<S> v_map(n, n);
   dynamic_vector<S> e = dynamic_vector<S>::Zero(n), col(n), all = dynamic_vector<S>::Ones(n);

@@ -13,6 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "mechcheck/core/atomic_file.hpp"
+
 namespace mechcheck::audit {
 namespace {
 
@@ -63,7 +65,8 @@ std::string energy_cell(const stepper_audit& a, const std::string& problem) {
 /// once a run is under way), else of the first step.
 std::string evaluations_cell(const stepper_audit& a) {
   for (const auto& p : a.problems)
-    if (p.run && p.run->evaluations_per_step > 0) return format("%.1f", p.run->evaluations_per_step);
+    if (p.run && p.run->evaluations_per_step > 0)
+      return format("%.1f", p.run->evaluations_per_step);
   for (const auto& p : a.problems)
     if (p.skipped.empty() && p.evaluations_per_step > 0)
       return format("%.0f", p.evaluations_per_step);
@@ -176,18 +179,6 @@ std::string escape_xml(const std::string& s) {
     }
   }
   return out;
-}
-
-void write_atomically(const std::filesystem::path& path, const std::string& content) {
-  const std::filesystem::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("write_report: cannot write " + tmp.string());
-    out << content;
-    out.flush();
-    if (!out) throw std::runtime_error("write_report: writing " + tmp.string() + " failed");
-  }
-  std::filesystem::rename(tmp, path);
 }
 
 std::string cell(const std::string& s) {
@@ -333,7 +324,8 @@ std::string svg_loglog(const std::string& title, const std::string& x_label,
     << "\" fill=\"none\" stroke=\"black\"/>\n"
     << "<text x=\"" << left + pw / 2 << "\" y=\"" << H - 16 << "\" text-anchor=\"middle\">"
     << escape_xml(x_label) << "</text>\n"
-    << "<text transform=\"translate(20," << top + ph / 2 << ") rotate(-90)\" text-anchor=\"middle\">"
+    << "<text transform=\"translate(20," << top + ph / 2
+    << ") rotate(-90)\" text-anchor=\"middle\">"
     << escape_xml(y_label) << "</text>\n";
   for (std::size_t k = 0; k < series.size(); ++k) {
     const char* c = colours[k % 10];
@@ -364,7 +356,7 @@ std::vector<std::string> write_report(const std::string& directory,
   fs::create_directories(dir);
   std::vector<std::string> written;
   const auto put = [&](const std::string& name, const std::string& content) {
-    write_atomically(dir / name, content);
+    write_file_atomically(dir / name, content);
     written.push_back((dir / name).string());
   };
   put("audit.json", to_json(audits, opt));
@@ -400,7 +392,8 @@ std::vector<std::string> write_report(const std::string& directory,
         svg_loglog("Energy error over the long run, " + pr + ", " + tier, "time t",
                    "RMS |E - E0| / |E0| in windows [2^w, 2^(w+1)) steps", energy));
     put("work-precision-" + tier + ".svg",
-        svg_loglog("Work against precision, " + pr + ", " + tier, "force / vector-field evaluations",
+        svg_loglog("Work against precision, " + pr + ", " + tier,
+                   "force / vector-field evaluations",
                    "|error| / scale at t_end", work));
   }
   return written;

@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "mechcheck/core/atomic_file.hpp"
+
 namespace mechcheck::harness {
 
 namespace {
@@ -109,10 +111,8 @@ std::string verdict(const law_result& r) {
 
 void write_row(const law_result& row, const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
-  const auto path = dir / (row.info.id + "." + row.tier + ".json");
-  std::ofstream out(path);
-  out << to_json(row).dump(2) << "\n";
-  if (!out) throw std::runtime_error("write_row: cannot write " + path.string());
+  write_file_atomically(dir / (row.info.id + "." + row.tier + ".json"),
+                        to_json(row).dump(2) + "\n");
 }
 
 std::vector<law_result> read_rows(const std::filesystem::path& dir) {
@@ -141,7 +141,7 @@ void write_report(const std::vector<law_result>& rows, const std::filesystem::pa
   for (const auto& r : rows)
     doc[r.info.expect == expectation::holds ? "laws" : "errata"].push_back(to_json(r));
   doc["base_seed"] = rows.empty() ? 0 : rows.front().base_seed;
-  std::ofstream(dir / "laws.json") << doc.dump(2) << "\n";
+  write_file_atomically(dir / "laws.json", doc.dump(2) + "\n");
 
   std::ostringstream md;
   md << "# Law report\n\n"
@@ -171,7 +171,7 @@ void write_report(const std::vector<law_result>& rows, const std::filesystem::pa
     md << "| " << r.info.id << " | " << join(r.info.equations, ", ") << " | " << r.tier << " | "
        << r.info.erratum << " | `" << ce << "` | " << verdict(r) << " |\n";
   }
-  std::ofstream(dir / "laws.md") << md.str();
+  write_file_atomically(dir / "laws.md", md.str());
 }
 
 std::string format_table(const std::vector<law_result>& rows) {
