@@ -187,6 +187,17 @@ TEST(Audit, DoubleRoundedCoefficientsPassInDoubleFailInMpfr50) {
   expect(m, "order", outcome::contradicted);
 }
 
+TEST(Audit, RefusesUnknownProblemsAndBadOptions) {
+  auto opt = quick<double>();
+  opt.problems = {"kepler_e0.7"};
+  EXPECT_THROW(audit::audit_stepper(audit::method<verlet_as_declared, double>("v"), opt),
+               domain_error);
+  opt = quick<double>();
+  opt.long_run_steps = -1;
+  EXPECT_THROW(audit::audit_stepper(audit::method<verlet_as_declared, double>("v"), opt),
+               domain_error);
+}
+
 TEST(Audit, ReportIsDeterministicWithoutTiming) {
   const auto a = audit_of<verlet_as_declared>("verlet");
   const auto b = audit_of<verlet_as_declared>("verlet");

@@ -62,8 +62,8 @@ struct heavy_top_nutation {
     const T other = abs(T(band.u_low - cos(theta0))) < abs(T(band.u_high - cos(theta0)))
                         ? band.u_high
                         : band.u_low;
-    check_close("cos theta at half period vs the other turning point", finest.u_half, other,
-                lift<T>(1), static_cast<double>(slack / mc::tier_epsilon<T>()));
+    check_model("cos theta at half period vs the other turning point", finest.u_half, other,
+                lift<T>(1), slack);
   }
 };
 MECHCHECK_LAW(heavy_top_nutation);

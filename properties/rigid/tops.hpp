@@ -24,6 +24,7 @@ using mc::lift;
 using mc::matrix3;
 using mc::vector3;
 using mc::harness::check_close;
+using mc::harness::check_model;
 using mc::harness::check_zero;
 using mc::harness::law_info;
 using mc::harness::check_exponent;

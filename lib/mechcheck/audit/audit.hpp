@@ -448,6 +448,21 @@ template <class T>
 stepper_audit audit_stepper(const stepper_under_audit<T>& s,
                             const std::vector<problem<T>>& problems,
                             const audit_options& opt = {}) {
+  // A name that matches no problem would silently audit nothing: refuse it.
+  for (const auto* names : {&opt.problems, &opt.long_run_problems})
+    for (const auto& name : *names)
+      if (std::none_of(problems.begin(), problems.end(),
+                       [&](const problem<T>& p) { return p.name == name; })) {
+        std::string known;
+        for (const auto& p : problems) known += " " + p.name;
+        throw domain_error("audit_stepper: no problem named '" + name + "' (known:" + known +
+                           ")");
+      }
+  if (opt.long_run_steps < 0 || opt.max_study_steps < 2 || opt.max_local_halvings < 1)
+    throw domain_error("audit_stepper: long_run_steps must be >= 0 (got " +
+                       std::to_string(opt.long_run_steps) + "), max_study_steps >= 2 (got " +
+                       std::to_string(opt.max_study_steps) + "), max_local_halvings >= 1 (got " +
+                       std::to_string(opt.max_local_halvings) + ")");
   const auto t0 = std::chrono::steady_clock::now();
   stepper_audit out;
   out.stepper = s.name;

@@ -60,7 +60,20 @@ class recorder {
     ++exponents_;
   }
 
+  /// A quantity checked against a model with a tolerance that is not rounding (a
+  /// truncation error, a linearisation): its relative deviation, reported as such.
+  void observe_model(double relative, double tolerance, const std::string& what) {
+    if (frozen_) return;
+    if (!(relative <= model_max_)) model_max_ = relative;
+    if (!(relative <= tolerance) && case_what_.empty()) case_what_ = what;
+    if (tolerance > model_tolerance_) model_tolerance_ = tolerance;
+    ++models_;
+  }
+
   int cases() const { return cases_; }
+  int model_checks() const { return models_; }
+  double model_max_relative() const { return model_max_; }
+  double model_tolerance() const { return model_tolerance_; }
   int exponent_checks() const { return exponents_; }
   double exponent_min_deviation() const { return min_dev_; }
   double exponent_max_deviation() const { return max_dev_; }
@@ -72,8 +85,8 @@ class recorder {
 
  private:
   bool frozen_ = false;
-  int cases_ = 0, exponents_ = 0;
-  double min_dev_ = 0, max_dev_ = 0, exp_tolerance_ = 0;
+  int cases_ = 0, exponents_ = 0, models_ = 0;
+  double min_dev_ = 0, max_dev_ = 0, exp_tolerance_ = 0, model_max_ = 0, model_tolerance_ = 0;
   double case_max_ = 0, max_ = 0, sum_sq_ = 0, budget_ = 0;
   std::string case_what_, worst_;
 };
@@ -111,6 +124,26 @@ void check_close(const std::string& what, const T& computed, const T& expected, 
 template <class T>
 void check_zero(const std::string& what, const T& computed, const T& scale, double budget_eps) {
   check_close(what, computed, lift<T>(0), scale, budget_eps);
+}
+
+/// Check |computed - expected| <= tolerance * scale where the tolerance comes from a model
+/// of something other than rounding (a truncation error, a linearisation): the report
+/// shows the relative deviation against it, not a residual in eps.
+template <class T>
+void check_model(const std::string& what, const T& computed, const T& expected, const T& scale,
+                 const T& tolerance) {
+  using std::abs;
+  const T deviation = abs(T(computed - expected)) / abs(scale);
+  const bool finite = is_finite(computed) && is_finite(expected) && is_finite(scale);
+  const double relative = finite ? static_cast<double>(deviation) : INFINITY;
+  if (recorder* rec = active_recorder())
+    rec->observe_model(relative, static_cast<double>(tolerance), what);
+  if (finite && deviation <= tolerance) return;
+  std::ostringstream os;
+  os << what << ": computed " << to_text(computed) << ", model " << to_text(expected)
+     << ", relative deviation " << to_text(deviation) << " (tolerance " << to_text(tolerance)
+     << "), scale " << to_text(scale);
+  RC_FAIL(os.str());
 }
 
 /// Check an exponent fitted by a convergence study (audit/studies.hpp) against the

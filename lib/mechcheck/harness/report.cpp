@@ -33,6 +33,10 @@ json to_json(const law_result& r) {
                      {"min_deviation", r.exponent_min_deviation},
                      {"max_deviation", r.exponent_max_deviation},
                      {"tolerance", r.exponent_tolerance}};
+  if (r.model_checks > 0)
+    j["model"] = {{"checks", r.model_checks},
+                  {"max_relative", r.model_max_relative},
+                  {"tolerance", r.model_tolerance}};
   j["base_seed"] = r.base_seed;
   j["seed"] = r.seed;
   j["reproduce"] = r.reproduce;
@@ -64,6 +68,12 @@ law_result from_json(const json& j) {
     r.exponent_max_deviation = e.at("max_deviation");
     r.exponent_tolerance = e.at("tolerance");
   }
+  if (j.contains("model")) {
+    const json& m = j.at("model");
+    r.model_checks = m.at("checks");
+    r.model_max_relative = m.at("max_relative");
+    r.model_tolerance = m.at("tolerance");
+  }
   r.base_seed = j.at("base_seed");
   r.seed = j.at("seed");
   r.reproduce = j.at("reproduce");
@@ -88,19 +98,28 @@ std::string number(double x) {
   return buf;
 }
 
-/// "-0.03..+0.05 (±0.4)": the fitted exponents against their truncation model; "-" when
-/// the law fits none.
+/// "-0.03..+0.05 (±0.4)": the fitted exponents against their truncation model, and
+/// "rel. 2.1e-09 (tol. 1e-06)" for other model checks; "-" when the law has neither.
 std::string exponent_cell(const law_result& r) {
-  if (r.exponent_checks == 0) return "-";
+  if (r.exponent_checks == 0 && r.model_checks == 0) return "-";
+  std::string cell;
   char buf[96];
-  std::snprintf(buf, sizeof buf, "%+.2f..%+.2f (±%.1f)", r.exponent_min_deviation,
-                r.exponent_max_deviation, r.exponent_tolerance);
-  return buf;
+  if (r.exponent_checks > 0) {
+    std::snprintf(buf, sizeof buf, "%+.2f..%+.2f (±%.1f)", r.exponent_min_deviation,
+                  r.exponent_max_deviation, r.exponent_tolerance);
+    cell = buf;
+  }
+  if (r.model_checks > 0) {
+    std::snprintf(buf, sizeof buf, "rel. %.1e (tol. %.0e)", r.model_max_relative,
+                  r.model_tolerance);
+    cell += (cell.empty() ? "" : "; ") + std::string(buf);
+  }
+  return cell;
 }
 
 /// An eps figure, or "-" for a law with no exact check (truncation models only).
 std::string eps_cell(const law_result& r, double x) {
-  return r.budget_eps == 0 && r.exponent_checks > 0 ? "-" : number(x);
+  return r.budget_eps == 0 && (r.exponent_checks > 0 || r.model_checks > 0) ? "-" : number(x);
 }
 
 std::string verdict(const law_result& r) {
@@ -149,7 +168,7 @@ void write_report(const std::vector<law_result>& rows, const std::filesystem::pa
         "budget is the tolerance the law derives from its computation. Truncation-model "
         "laws give the range of fitted exponent minus the model's, and its tolerance.\n\n"
      << "| law | title | eqs | tier | digits | cases | max eps | RMS eps | budget | "
-        "exponent - model | result |\n"
+        "model: exponent - p, rel. deviation | result |\n"
      << "|---|---|---|---|---:|---:|---:|---:|---:|---|---|\n";
   for (const auto& r : rows) {
     if (r.info.expect != expectation::holds) continue;
@@ -187,7 +206,7 @@ std::string format_table(const std::vector<law_result>& rows) {
                        const std::string& tier, const std::string& cases, const std::string& mx,
                        const std::string& rms, const std::string& budget,
                        const std::string& exponent, const std::string& result) {
-    std::snprintf(line, sizeof line, "%-*s  %-*s  %-*s  %-8s  %6s  %10s  %10s  %10s  %-20s  %s\n",
+    std::snprintf(line, sizeof line, "%-*s  %-*s  %-*s  %-8s  %6s  %10s  %10s  %10s  %-22s  %s\n",
                   static_cast<int>(wid), id.c_str(), static_cast<int>(wtitle),
                   title.substr(0, 48).c_str(), static_cast<int>(weq), eq.c_str(), tier.c_str(),
                   cases.c_str(), mx.c_str(), rms.c_str(), budget.c_str(), exponent.c_str(),
@@ -195,7 +214,7 @@ std::string format_table(const std::vector<law_result>& rows) {
     os << line;
   };
   row("law", "title", "eqs", "tier", "cases", "max eps", "rms eps", "budget",
-      "exponent - model", "result");
+      "model", "result");
   for (const auto& r : rows)
     row(r.info.id, r.info.title, join(r.info.equations, ","), r.tier, std::to_string(r.cases),
         eps_cell(r, r.max_residual_eps), eps_cell(r, r.rms_residual_eps),

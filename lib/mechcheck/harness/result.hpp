@@ -46,6 +46,9 @@ struct law_result {
   double exponent_min_deviation = 0;  ///< least fitted - model over those checks
   double exponent_max_deviation = 0;  ///< largest fitted - model
   double exponent_tolerance = 0;      ///< the allowed |fitted - model|
+  int model_checks = 0;               ///< checks against a non-rounding model tolerance
+  double model_max_relative = 0;      ///< largest relative deviation from the model
+  double model_tolerance = 0;         ///< its (largest) tolerance
   std::uint64_t base_seed = 0;
   std::uint64_t seed = 0;
   std::string counterexample;  ///< shrunk counterexample, one "value" per line

@@ -94,6 +94,9 @@ law_result make_result(const law_info& info, const std::string& tier, int digits
   r.exponent_min_deviation = rec.exponent_min_deviation();
   r.exponent_max_deviation = rec.exponent_max_deviation();
   r.exponent_tolerance = rec.exponent_tolerance();
+  r.model_checks = rec.model_checks();
+  r.model_max_relative = rec.model_max_relative();
+  r.model_tolerance = rec.model_tolerance();
   r.cases = rec.cases();
   {
     std::ostringstream cmd;
