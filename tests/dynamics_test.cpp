@@ -32,7 +32,7 @@ TEST(dynamics_errors, singular_kinetic_matrix) {
   const legendre_hamiltonian<degenerate_lagrangian> h{{}};
   EXPECT_THROW(h(q, v, 0.0), singular_error);
   EXPECT_NE(message_of([&] { h(q, v, 0.0); })
-                .find("legendre: the kinetic matrix d2L/dqdot2 is singular (rank 1 of 2)"),
+                .find("velocities_from_momenta: the kinetic matrix d2L/dqdot2 is singular (rank 1 of 2)"),
             std::string::npos);
 }
 

@@ -1,8 +1,14 @@
 // Self-test of the law harness: a deliberately wrong law must fail with a shrunk
 // counterexample and a reproduce command; the same seed must give the same report.
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <thread>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -124,7 +130,7 @@ TEST(harness_config, environment_overrides_and_bad_values) {
     FAIL() << "no exception";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(),
-                 "run_config: MECHCHECK_SEED must be a non-negative integer, got 'forty-two'");
+                 "run_config: MECHCHECK_SEED must be a non-negative decimal integer, got 'forty-two'");
   }
   ::setenv("MECHCHECK_SEED", "1", 1);
   ::setenv("MECHCHECK_CASES", "0", 1);
@@ -155,6 +161,182 @@ TEST(harness_report, rows_round_trip_into_the_json_contract) {
   EXPECT_EQ(row.at("passed"), false);
   EXPECT_EQ(doc.at("errata").size(), 1u);
   EXPECT_NE(format_table(rows).find("selftest.wrong_angular_momentum"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+// --- the harness under faults: each fault fails the law, and says which --------------------
+
+/// A residual that is NaN (a model returning NaN must never read as "0 eps").
+struct nan_residual {
+  static law_info info() { return {"selftest.nan_residual", "a NaN computed value", {"1"}}; }
+  template <class T>
+  static void property() {
+    const double x = *gen::coordinate();
+    check_close("x", T(x * std::numeric_limits<double>::quiet_NaN()), T(x), T(1), 4);
+  }
+};
+
+/// Draws values and checks nothing.
+struct checks_nothing {
+  static law_info info() { return {"selftest.checks_nothing", "draws, asserts nothing", {"1"}}; }
+  template <class T>
+  static void property() {
+    static_cast<void>(*gen::coordinate());
+  }
+};
+
+/// Throws something that is not a std::exception.
+struct throws_an_int {
+  static law_info info() { return {"selftest.throws_an_int", "throws 42", {"1"}}; }
+  template <class T>
+  static void property() {
+    check_close("one", T(1), T(1), T(1), 0);
+    throw 42;
+  }
+};
+
+/// Never finishes.
+struct hangs {
+  static law_info info() { return {"selftest.hangs", "never finishes", {"1"}}; }
+  template <class T>
+  static void property() {
+    check_close("one", T(1), T(1), T(1), 0);
+    for (;;) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+};
+
+TEST(harness_faults, a_nan_residual_fails_and_says_nan) {
+  const law_result r = run_law<nan_residual, double>(run_config{});
+  EXPECT_FALSE(r.passed);
+  EXPECT_NE(r.message.find("nan"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("Reproduce:"), std::string::npos) << r.message;
+}
+
+TEST(harness_faults, a_law_that_records_no_check_fails) {
+  const law_result r = run_law<checks_nothing, double>(run_config{});
+  EXPECT_FALSE(r.passed);
+  EXPECT_NE(r.message.find("recorded no check in 100 cases"), std::string::npos) << r.message;
+}
+
+TEST(harness_faults, a_foreign_exception_fails_the_law_with_its_text) {
+  const law_result r = run_law<throws_an_int, double>(run_config{});
+  EXPECT_FALSE(r.passed);
+  EXPECT_FALSE(r.message.empty());
+  const law_result boom = run_law<throws_after_passing, double>(run_config{});
+  EXPECT_FALSE(boom.passed);
+  EXPECT_NE(boom.message.find("boom"), std::string::npos) << boom.message;
+}
+
+TEST(harness_faults, a_hung_law_is_stopped_at_its_time_limit_with_its_name) {
+  // In a child process (the watchdog ends the process it runs in); its stderr comes back
+  // through a pipe.
+  int fds[2];
+  ASSERT_EQ(::pipe(fds), 0);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    ::dup2(fds[1], 2);
+    ::close(fds[0]);
+    run_config config;
+    config.time_limit_seconds = 1;
+    run_law<hangs, double>(config);
+    std::_Exit(0);  // not reached
+  }
+  ::close(fds[1]);
+  std::string err;
+  char buffer[256];
+  for (ssize_t n; (n = ::read(fds[0], buffer, sizeof buffer)) > 0;) err.append(buffer, std::size_t(n));
+  ::close(fds[0]);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 124);
+  EXPECT_NE(err.find("law selftest.hangs [double] (seed 20261122, 100 cases) exceeded its time "
+                     "limit of 1 s"),
+            std::string::npos)
+      << err;
+}
+
+TEST(harness_faults, malformed_environment_is_refused) {
+  const auto refused = [](const char* name, const char* value) {
+    ::setenv(name, value, 1);
+    bool thrown = false;
+    try {
+      run_config::from_environment();
+    } catch (const std::invalid_argument& e) {
+      thrown = std::string(e.what()).find(name) != std::string::npos;
+    }
+    ::unsetenv(name);
+    return thrown;
+  };
+  for (const char* v : {"-1", "12abc", "1e3", " 7", "0x10", "99999999999999999999999"})
+    EXPECT_TRUE(refused("MECHCHECK_SEED", v)) << v;
+  for (const char* v : {"0", "-5", "ten", "1000001", "2.5"})
+    EXPECT_TRUE(refused("MECHCHECK_CASES", v)) << v;
+  for (const char* v : {"0", "-1", "soon", "86401"})
+    EXPECT_TRUE(refused("MECHCHECK_LAW_TIMEOUT", v)) << v;
+}
+
+/// Passes.
+struct passes {
+  static law_info info() { return {"selftest.passes", "1 = 1", {"1"}}; }
+  template <class T>
+  static void property() {
+    static_cast<void>(*gen::coordinate());
+    check_close("one", T(1), T(1), T(1), 0);
+  }
+};
+
+/// Runs mechcheck_report on a rows directory; returns its exit code.
+int run_report(const std::filesystem::path& rows, const std::filesystem::path& out) {
+  const std::string cmd = std::string(MECHCHECK_REPORT_EXE) + " --rows '" + rows.string() +
+                          "' --out '" + out.string() + "' > /dev/null 2>&1";
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(harness_faults, the_report_refuses_missing_truncated_and_malformed_rows) {
+  const auto dir = std::filesystem::temp_directory_path() / "mechcheck_report_faults";
+  std::filesystem::remove_all(dir);
+  run_config config;
+  config.cases = 5;
+  // A passing row, so that a report written anyway would claim a pass.
+  const law_result good = run_law<passes, double>(config);
+  ASSERT_TRUE(good.passed) << good.message;
+  write_row(good, dir / "rows");
+  EXPECT_EQ(run_report(dir / "rows", dir / "out"), 0);
+  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "laws.json"));
+
+  EXPECT_THROW(read_rows(dir / "no-such-dir"), std::runtime_error);
+  EXPECT_EQ(run_report(dir / "no-such-dir", dir / "missing"), 2);
+  EXPECT_FALSE(std::filesystem::exists(dir / "missing" / "laws.json"));
+
+  const auto text = [&] {
+    std::ifstream in(dir / "rows" / "selftest.passes.double.json");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  const std::vector<std::pair<std::string, std::string>> broken{
+      {"truncated", text.substr(0, text.size() / 2)},
+      {"empty", ""},
+      {"not json", "passed: true\n"},
+      {"a field missing", R"({"id": "x", "passed": true})"},
+      {"a field of the wrong type", std::string(text).replace(text.find("\"cases\": 5"), 10,
+                                                              "\"cases\": \"five\"")}};
+  for (const auto& [what, content] : broken) {
+    const auto rows = dir / ("rows-" + std::to_string(&what - &broken[0].first));
+    std::filesystem::create_directories(rows);
+    std::filesystem::copy_file(dir / "rows" / "selftest.passes.double.json", rows / "a.json");
+    std::ofstream(rows / "b.json") << content;
+    try {
+      read_rows(rows);
+      ADD_FAILURE() << what << ": read";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("b.json"), std::string::npos) << what << ": " << e.what();
+    }
+    const auto out = dir / ("out-" + std::to_string(&what - &broken[0].first));
+    EXPECT_EQ(run_report(rows, out), 2) << what;
+    EXPECT_FALSE(std::filesystem::exists(out / "laws.json")) << what;
+  }
   std::filesystem::remove_all(dir);
 }
 }  // namespace

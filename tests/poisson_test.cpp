@@ -111,7 +111,7 @@ TEST(poisson_errors, dimensions_must_match) {
   const auto x2 = point<double>({1.0, 2.0}, {3.0, 4.0});
   EXPECT_THROW(poisson_bracket(angular_momentum{0}, angular_momentum{1}, x2), dimension_error);
   EXPECT_EQ(message_of([&] { poisson_bracket(angular_momentum{0}, angular_momentum{1}, x2); }),
-            "angular_momentum: needs 3 degrees of freedom (Cartesian r), got 2");
+            "angular_momentum: q needs 3 degrees of freedom (Cartesian r), got 2");
   mechcheck::generators::smooth_function f;
   f.dof = 3;
   EXPECT_EQ(message_of([&] { poisson_bracket(f, q_component{0}, x2); }),

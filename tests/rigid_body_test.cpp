@@ -30,7 +30,7 @@ TEST(inertia_errors, masses_and_positions) {
   EXPECT_EQ(message_of([&] { inertia_tensor(mismatched, V::Zero().eval()); }),
             "inertia_tensor: 2 masses for 1 positions");
   EXPECT_EQ(message_of([] { reference::cube_inertia(1.0, -1.0); }),
-            "box_inertia: edge a must be positive and finite, got -1");
+            "cube_inertia: edge l must be positive and finite, got -1");
 }
 
 TEST(inertia_errors, invalid_tensors) {

@@ -38,6 +38,8 @@ using state = phase_state<dynamic_vector<T>>;
 template <class T>
 class erased_system {
  public:
+  /// Some problems (the free top) have a non-canonical state of unequal parts.
+  static constexpr bool canonical = false;
   template <class S>
   using vec = dynamic_vector<S>;
 

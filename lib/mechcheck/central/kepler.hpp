@@ -38,6 +38,10 @@ two_body_coordinates<T> to_relative(const T& m1, const T& m2, const vector3<T>& 
                                     const vector3<T>& v2) {
   require_positive(m1, "to_relative", "m1");
   require_positive(m2, "to_relative", "m2");
+  require_finite_vector(r1, "to_relative", "r1");
+  require_finite_vector(r2, "to_relative", "r2");
+  require_finite_vector(v1, "to_relative", "v1");
+  require_finite_vector(v2, "to_relative", "v2");
   const T total = m1 + m2;
   return {(m1 * r1 + m2 * r2) / total, (m1 * v1 + m2 * v2) / total, r1 - r2, v1 - v2};
 }
@@ -49,6 +53,8 @@ std::pair<vector3<T>, vector3<T>> from_relative(const T& m1, const T& m2, const 
                                                 const vector3<T>& r) {
   require_positive(m1, "from_relative", "m1");
   require_positive(m2, "from_relative", "m2");
+  require_finite_vector(centre, "from_relative", "centre");
+  require_finite_vector(r, "from_relative", "r");
   const T total = m1 + m2;
   return {centre + (m2 / total) * r, centre - (m1 / total) * r};
 }
@@ -81,6 +87,8 @@ struct kepler_constants {
 /// Throws domain_error when E >= 0 (the orbit is not bound).
 template <class T>
 T semi_major_axis(const kepler_constants<T>& c, const T& energy) {
+  if (!is_finite(energy))
+    throw non_finite_error("semi_major_axis: energy E = " + to_text(energy) + " is not finite");
   if (!(energy < 0))
     throw domain_error("semi_major_axis: energy E = " + to_text(energy) +
                        " >= 0: the orbit is not bound");
@@ -92,7 +100,13 @@ T semi_major_axis(const kepler_constants<T>& c, const T& energy) {
 template <class T>
 T orbital_period(const kepler_constants<T>& c, const vector3<T>& r, const vector3<T>& p) {
   using std::sqrt;
-  const T a = semi_major_axis(c, c.energy(r, p));
+  require_finite_vector(r, "orbital_period", "r");
+  require_finite_vector(p, "orbital_period", "p");
+  const T energy = c.energy(r, p);
+  if (!(energy < 0))
+    throw domain_error("orbital_period: energy E = " + to_text(energy) + " >= 0 at r = " +
+                       to_text(r) + ", p = " + to_text(p) + ": the orbit is not bound");
+  const T a = semi_major_axis(c, energy);
   return boost::math::constants::two_pi<T>() * sqrt(T(c.mu * a * a * a / c.k));
 }
 
@@ -173,12 +187,22 @@ void require_eccentricity(const T& e, const char* where, bool elliptic) {
     throw domain_error(std::string(where) + ": eccentricity " + to_text(e) +
                        " is not above 1 (a hyperbola is required)");
 }
+/// Any conic: a finite e >= 0.
+template <class T>
+void require_conic(const T& e, const char* where) {
+  if (!is_finite(e)) throw non_finite_error(std::string(where) + ": eccentricity " + to_text(e));
+  if (!(e >= 0))
+    throw domain_error(std::string(where) + ": eccentricity " + to_text(e) + " is negative");
+}
 }  // namespace detail
 
 /// Mean anomaly E - e sin E from the eccentric anomaly, without cancellation near e = 1,
 /// E = 0: (1 - e) E + e (E - sin E).
 template <class T>
 T mean_anomaly_from_eccentric(const T& e, const T& eccentric) {
+  detail::require_eccentricity(e, "mean_anomaly_from_eccentric", true);
+  if (!is_finite(eccentric))
+    throw non_finite_error("mean_anomaly_from_eccentric: eccentric anomaly " + to_text(eccentric));
   return (1 - e) * eccentric + e * detail::x_minus_sin(eccentric);
 }
 
@@ -340,6 +364,11 @@ T mean_anomaly_from_true(const T& e, const T& nu) {
   using std::sin;
   using std::sqrt;
   using std::tan;
+  detail::require_conic(e, "mean_anomaly_from_true");
+  if (!is_finite(nu)) throw non_finite_error("mean_anomaly_from_true: true anomaly " + to_text(nu));
+  if (e > 1 && !(1 + e * cos(nu) > 0))
+    throw domain_error("mean_anomaly_from_true: true anomaly " + to_text(nu) +
+                       " is beyond the asymptotes of the hyperbola of eccentricity " + to_text(e));
   if (e < 1) {
     const T ecc = 2 * atan2(T(sqrt(T(1 - e)) * sin(nu / 2)), T(sqrt(T(1 + e)) * cos(nu / 2)));
     return mean_anomaly_from_eccentric(e, ecc);
@@ -364,6 +393,8 @@ T true_anomaly_from_mean(const T& e, const T& m) {
   using std::sinh;
   using std::sqrt;
   using std::tanh;
+  detail::require_conic(e, "true_anomaly_from_mean");
+  if (!is_finite(m)) throw non_finite_error("true_anomaly_from_mean: mean anomaly " + to_text(m));
   if (e < 1) {
     const T ecc = solve_kepler(e, m);
     return 2 * atan2(T(sqrt(T(1 + e)) * sin(ecc / 2)), T(sqrt(T(1 - e)) * cos(ecc / 2)));
@@ -383,7 +414,7 @@ template <class T>
 class kepler_orbit {
  public:
   kepler_orbit(kepler_constants<T> c, const vector3<T>& r0, const vector3<T>& v0)
-      : c_(std::move(c)), el_(elements_from_state(c_, r0, v0)) {
+      : c_(std::move(c)), el_(elements(c_, r0, v0)) {
     using std::abs;
     using std::sqrt;
     const T e = el_.eccentricity, p = el_.semi_latus_rectum, gm = c_.k / c_.mu;
@@ -396,6 +427,16 @@ class kepler_orbit {
     m0_ = mean_anomaly_from_true(e, el_.true_anomaly);
   }
   const orbit_elements<T>& elements() const { return el_; }
+  /// The elements of the orbit through (r0, v0), checked under this class's name.
+  static orbit_elements<T> elements(const kepler_constants<T>& c, const vector3<T>& r0,
+                                    const vector3<T>& v0) {
+    require_finite_vector(r0, "kepler_orbit", "r0");
+    require_finite_vector(v0, "kepler_orbit", "v0");
+    if (!(r0.cross(v0).squaredNorm() > 0))
+      throw domain_error("kepler_orbit: zero angular momentum at r0 = " + to_text(r0) +
+                         ", v0 = " + to_text(v0) + " (a radial orbit has no conic)");
+    return elements_from_state(c, r0, v0);
+  }
   /// Mean motion n (2 pi / n is the period of a bound orbit).
   T mean_motion() const { return motion_; }
   std::pair<vector3<T>, vector3<T>> state_at(const T& t) const {

@@ -51,12 +51,43 @@ Eigen::Index first_non_finite(const Eigen::MatrixBase<Derived>& v) {
   return -1;
 }
 
-/// Throws domain_error "where: what must be positive and finite, got value".
+/// Throws non_finite_error "where: what has component i = value" for the first NaN or
+/// infinite entry of a vector.
+template <class Derived>
+void require_finite_vector(const Eigen::MatrixBase<Derived>& v, const std::string& where,
+                           const char* what) {
+  if (const auto i = first_non_finite(v); i >= 0)
+    throw non_finite_error(where + ": " + what + " has component " + std::to_string(i) + " = " +
+                           to_text(v(i)));
+}
+
+/// Throws non_finite_error "where: what must be finite, got value".
+template <class P>
+void require_finite_value(const P& value, const char* where, const char* what) {
+  if (!is_finite(value))
+    throw non_finite_error(std::string(where) + ": " + what + " must be finite, got " +
+                           to_text(value));
+}
+
+/// Throws domain_error "where: what must be positive and finite, got value"; a subnormal
+/// value is refused too (its reciprocal overflows, and no physical scale is that small).
 template <class P>
 void require_positive(const P& value, const char* where, const char* what) {
+  using R = real_type_t<P>;
   if (!(is_finite(value) && value > 0))
     throw domain_error(std::string(where) + ": " + what + " must be positive and finite, got " +
                        to_text(value));
+  if (innermost_value(value) < std::numeric_limits<R>::min())
+    throw domain_error(std::string(where) + ": " + what + " must be a normal number, got " +
+                       to_text(value) + " (subnormal)");
+}
+
+/// Throws domain_error "where: what must be non-negative and finite, got value".
+template <class P>
+void require_non_negative(const P& value, const char* where, const char* what) {
+  if (!(is_finite(value) && value >= 0))
+    throw domain_error(std::string(where) + ": " + what +
+                       " must be non-negative and finite, got " + to_text(value));
 }
 
 }  // namespace mechcheck

@@ -44,7 +44,7 @@ dynamic_vector<S> velocities_from_momenta(const L& lag, const dynamic_vector<S>&
   using R = real_type_t<S>;
   const Eigen::Index n = q.size();
   if (p.size() != n)
-    throw dimension_error("legendre: q has " + std::to_string(n) + " components but p has " +
+    throw dimension_error("velocities_from_momenta: q has " + std::to_string(n) + " components but p has " +
                           std::to_string(p.size()));
   dynamic_vector<R> qr(n), pr(n);
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -54,7 +54,7 @@ dynamic_vector<S> velocities_from_momenta(const L& lag, const dynamic_vector<S>&
   const R tr = innermost_value(t);
   const auto state = [&] { return "q = " + to_text(qr) + ", p = " + to_text(pr) + ", t = " + to_text(tr); };
   if (first_non_finite(qr) >= 0 || first_non_finite(pr) >= 0 || !is_finite(tr))
-    throw non_finite_error("legendre: non-finite state " + state());
+    throw non_finite_error("velocities_from_momenta: non-finite state " + state());
 
   const detail::lagrangian_of_velocity<L, R> lr{lag, qr, tr};
   dynamic_vector<R> v = dynamic_vector<R>::Constant(n, lift<R>(0));
@@ -68,10 +68,10 @@ dynamic_vector<S> velocities_from_momenta(const L& lag, const dynamic_vector<S>&
     const auto e = second_order_expansion(lr, v);
     const dynamic_vector<R> residual = e.gradient - pr;
     if (first_non_finite(residual) >= 0)
-      throw non_finite_error("legendre: dL/dqdot is not finite at qdot = " + to_text(v) + ", " +
+      throw non_finite_error("velocities_from_momenta: dL/dqdot is not finite at qdot = " + to_text(v) + ", " +
                              state());
     const dynamic_vector<R> step =
-        solve_kinetic(e.hessian, residual, "legendre", "qdot = " + to_text(v) + ", " + state());
+        solve_kinetic(e.hessian, residual, "velocities_from_momenta", "qdot = " + to_text(v) + ", " + state());
     v -= step;
     last_step = step.template lpNorm<Eigen::Infinity>();
     const R size = v.template lpNorm<Eigen::Infinity>();
@@ -81,7 +81,7 @@ dynamic_vector<S> velocities_from_momenta(const L& lag, const dynamic_vector<S>&
     previous_step = last_step;
   }
   if (!converged)
-    throw convergence_error("legendre: Newton's method for qdot did not converge in 100 "
+    throw convergence_error("velocities_from_momenta: Newton's method for qdot did not converge in 100 "
                             "iterations (last step " + to_text(last_step) + ") at " + state());
   if constexpr (std::is_same_v<S, R>) {
     return v;
@@ -169,7 +169,7 @@ struct hamilton_rates {
 template <class T, class H>
 hamilton_rates<T> hamilton_equations(const H& ham, const dynamic_vector<T>& q,
                                      const dynamic_vector<T>& p, const T& t) {
-  detail::require_state(q, p, t, "hamilton_equations");
+  detail::require_state(q, p, t, "hamilton_equations", "p");
   const Eigen::Index n = q.size();
   dynamic_vector<T> z(2 * n + 1);
   z << q, p, t;

@@ -42,6 +42,7 @@ class recorder {
   }
   void observe(double residual_eps, double budget_eps, const std::string& what) {
     if (frozen_) return;
+    ++checks_;
     if (!(residual_eps <= case_max_)) {  // also takes NaN
       case_max_ = residual_eps;
       case_what_ = what;
@@ -71,6 +72,8 @@ class recorder {
   }
 
   int cases() const { return cases_; }
+  /// Checks of every kind recorded over the counted cases.
+  int checks() const { return checks_ + exponents_ + models_; }
   int model_checks() const { return models_; }
   double model_max_relative() const { return model_max_; }
   double model_tolerance() const { return model_tolerance_; }
@@ -85,7 +88,7 @@ class recorder {
 
  private:
   bool frozen_ = false;
-  int cases_ = 0, exponents_ = 0, models_ = 0;
+  int cases_ = 0, checks_ = 0, exponents_ = 0, models_ = 0;
   double min_dev_ = 0, max_dev_ = 0, exp_tolerance_ = 0, model_max_ = 0, model_tolerance_ = 0;
   double case_max_ = 0, max_ = 0, sum_sq_ = 0, budget_ = 0;
   std::string case_what_, worst_;

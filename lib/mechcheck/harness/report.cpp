@@ -136,7 +136,8 @@ void write_row(const law_result& row, const std::filesystem::path& dir) {
 
 std::vector<law_result> read_rows(const std::filesystem::path& dir) {
   std::vector<law_result> rows;
-  if (!std::filesystem::is_directory(dir)) return rows;
+  if (!std::filesystem::is_directory(dir))
+    throw std::runtime_error("read_rows: " + dir.string() + " is not a directory of rows");
   for (const auto& e : std::filesystem::directory_iterator(dir)) {
     if (e.path().extension() != ".json") continue;
     std::ifstream in(e.path());

@@ -24,7 +24,12 @@ struct law_info {
 struct run_config {
   std::uint64_t base_seed = 20261122;  ///< MECHCHECK_SEED overrides
   int cases = 100;                     ///< MECHCHECK_CASES overrides
-  /// Read MECHCHECK_SEED and MECHCHECK_CASES; throws std::invalid_argument on bad text.
+  /// Wall-clock limit of one law in one tier, in seconds (MECHCHECK_LAW_TIMEOUT
+  /// overrides): a law still running then ends the process with a message naming it and
+  /// exit code 124, before ctest's own TIMEOUT would kill it without one.
+  int time_limit_seconds = 600;
+  /// Read MECHCHECK_SEED, MECHCHECK_CASES and MECHCHECK_LAW_TIMEOUT; throws
+  /// std::invalid_argument on bad text.
   static run_config from_environment();
   /// The RapidCheck seed of one law: the base seed mixed with the law id (not the tier,
   /// so every tier sees the same generated cases).

@@ -1,7 +1,12 @@
+#include <chrono>
+#include <condition_variable>
 #include <cstdlib>
 #include <filesystem>
+#include <iostream>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "mechcheck/harness/law.hpp"
 
@@ -19,17 +24,20 @@ recorder*& active_recorder() {
 
 namespace {
 std::uint64_t parse_unsigned(const char* name, const char* text) {
-  std::size_t used = 0;
+  // Decimal digits only: no sign, no blanks, no octal or hex prefix, no overflow.
   const std::string s(text);
   unsigned long long v = 0;
-  try {
-    v = std::stoull(s, &used, 0);
-  } catch (const std::exception&) {
-    used = 0;
+  bool ok = !s.empty() && s.find_first_not_of("0123456789") == std::string::npos;
+  if (ok) {
+    try {
+      v = std::stoull(s, nullptr, 10);
+    } catch (const std::exception&) {
+      ok = false;
+    }
   }
-  if (used == 0 || used != s.size() || s.front() == '-')
+  if (!ok)
     throw std::invalid_argument(std::string("run_config: ") + name +
-                                " must be a non-negative integer, got '" + s + "'");
+                                " must be a non-negative decimal integer, got '" + s + "'");
   return v;
 }
 
@@ -66,6 +74,13 @@ run_config run_config::from_environment() {
       throw std::invalid_argument("run_config: MECHCHECK_CASES must be in 1..1000000, got " +
                                   std::string(s));
     c.cases = static_cast<int>(n);
+  }
+  if (const char* s = std::getenv("MECHCHECK_LAW_TIMEOUT"); s && *s) {
+    const auto n = parse_unsigned("MECHCHECK_LAW_TIMEOUT", s);
+    if (n == 0 || n > 86400)
+      throw std::invalid_argument("run_config: MECHCHECK_LAW_TIMEOUT must be in 1..86400 "
+                                  "seconds, got " + std::string(s));
+    c.time_limit_seconds = static_cast<int>(n);
   }
   return c;
 }
@@ -106,7 +121,12 @@ law_result make_result(const law_info& info, const std::string& tier, int digits
   }
   const bool expect_hold = info.expect == expectation::holds;
   std::ostringstream msg;
-  if (outcome.template is<rc::detail::SuccessResult>()) {
+  if (outcome.template is<rc::detail::SuccessResult>() && rec.checks() == 0) {
+    r.passed = false;
+    msg << "law " << info.id << " recorded no check in " << r.cases
+        << " cases: a property that checks nothing cannot fail, so it cannot pass either"
+        << "\nReproduce: " << r.reproduce;
+  } else if (outcome.template is<rc::detail::SuccessResult>()) {
     r.passed = expect_hold;
     if (!expect_hold)
       msg << "erratum not demonstrated: the printed form held in all " << r.cases
@@ -146,6 +166,40 @@ law_result make_result(const law_info& info, const std::string& tier, int digits
   return r;
 }
 
+/// Ends the process when the law it watches runs past the time limit: a hung law would
+/// otherwise be killed by ctest's TIMEOUT with no word of which law or case it was.
+class watchdog {
+ public:
+  watchdog(std::string what, int seconds) : what_(std::move(what)), seconds_(seconds) {
+    thread_ = std::thread([this] {
+      std::unique_lock<std::mutex> lock(mutex_);
+      if (!done_cv_.wait_for(lock, std::chrono::seconds(seconds_), [this] { return done_; })) {
+        std::cerr << "\nmechcheck: " << what_ << " exceeded its time limit of " << seconds_
+                  << " s (MECHCHECK_LAW_TIMEOUT) and was stopped" << std::endl;
+        std::_Exit(124);
+      }
+    });
+  }
+  ~watchdog() {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      done_ = true;
+    }
+    done_cv_.notify_one();
+    thread_.join();
+  }
+  watchdog(const watchdog&) = delete;
+  watchdog& operator=(const watchdog&) = delete;
+
+ private:
+  std::string what_;
+  int seconds_;
+  std::mutex mutex_;
+  std::condition_variable done_cv_;
+  bool done_ = false;
+  std::thread thread_;
+};
+
 }  // namespace
 
 law_result run_property(const law_info& info, std::string_view tier, int digits,
@@ -172,7 +226,13 @@ law_result run_property(const law_info& info, std::string_view tier, int digits,
   rc::detail::TestMetadata metadata;
   metadata.id = info.id + "." + std::string(tier);
   metadata.description = info.title;
-  const auto outcome = rc::detail::checkTestable(body, metadata, params);
+  const auto outcome = [&] {
+    const watchdog limit("law " + info.id + " [" + std::string(tier) + "] (seed " +
+                             std::to_string(config.base_seed) + ", " +
+                             std::to_string(config.cases) + " cases)",
+                         config.time_limit_seconds);
+    return rc::detail::checkTestable(body, metadata, params);
+  }();
   active_recorder() = previous;
   return make_result(info, std::string(tier), digits, config, outcome, rec);
 }

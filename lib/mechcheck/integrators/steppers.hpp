@@ -33,9 +33,22 @@ namespace mechcheck {
 template <class F, class Vec>
 concept stepper = requires(F f, phase_state<Vec>& x, const typename Vec::Scalar& h) { f(x, h); };
 
+/// A system whose state is not a canonical pair (q, p) of equal lengths (the free rigid
+/// body: q = M, p = the attitude) declares `static constexpr bool canonical = false;`.
+template <class System>
+constexpr bool is_canonical() {
+  if constexpr (requires { System::canonical; })
+    return System::canonical;
+  else
+    return true;
+}
+
 namespace detail {
-template <class Vec>
+template <bool Canonical = true, class Vec>
 void require_finite_state(const phase_state<Vec>& x, const char* where) {
+  if (Canonical && x.q.size() != x.p.size()) [[unlikely]]
+    throw dimension_error(std::string(where) + ": state has " + std::to_string(x.q.size()) +
+                          " q components but p has " + std::to_string(x.p.size()));
   if constexpr (std::is_floating_point_v<typename Vec::Scalar>) {
     if (x.q.allFinite() && x.p.allFinite()) [[likely]]
       return;
@@ -53,20 +66,26 @@ template <class S>
 void require_step(const S& h, const char* where) {
   if (!is_finite(h))
     throw non_finite_error(std::string(where) + ": step h must be finite, got " + to_text(h));
-  if (h == 0) throw domain_error(std::string(where) + ": step h must be non-zero, got 0");
+  if (h == 0)
+    throw domain_error(std::string(where) + ": step h must be non-zero, got " + to_text(h));
 }
 
 /// One guarded step: checks the state and h, runs body(x), and checks that the state it
 /// leaves is finite. A step that overflows (a force blowing up, h far too large) throws
 /// non_finite_error from that step, naming h and the state it started from, and leaves
-/// x exactly as it was.
-template <class Vec, class Body>
+/// x exactly as it was; so does any error thrown inside the step.
+template <class System, class Vec, class Body>
 void guarded_step(phase_state<Vec>& x, const typename Vec::Scalar& h, const char* where,
                   Body&& body) {
-  require_finite_state(x, where);
+  require_finite_state<is_canonical<System>()>(x, where);
   require_step(h, where);
   const phase_state<Vec> start = x;
-  body(x);
+  try {
+    body(x);
+  } catch (...) {
+    x = start;  // an error inside the step (a system refusing a state) leaves no half step
+    throw;
+  }
   const auto bad_q = first_non_finite(x.q), bad_p = first_non_finite(x.p);
   if (bad_q < 0 && bad_p < 0) [[likely]]
     return;
@@ -140,7 +159,7 @@ struct explicit_euler {
   static constexpr bool symmetric = false;
   System system;
   void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) const {
-    detail::guarded_step(x, h, "explicit_euler", [&](phase_state<Vec>& y) {
+    detail::guarded_step<System>(x, h, "explicit_euler", [&](phase_state<Vec>& y) {
       Vec dq = y.q, dp = y.p;
       system.vector_field(y.q, y.p, dq, dp);
       detail::axpy(y.q, h, dq);
@@ -157,7 +176,7 @@ struct rk4 {
   static constexpr bool symmetric = false;
   System system;
   void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) const {
-    detail::guarded_step(x, h, "rk4", [&](phase_state<Vec>& y) { step(y, h); });
+    detail::guarded_step<System>(x, h, "rk4", [&](phase_state<Vec>& y) { step(y, h); });
   }
 
  private:
@@ -208,7 +227,7 @@ struct symplectic_euler {
   static constexpr bool symmetric = false;
   System system;
   void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) const {
-    detail::guarded_step(x, h, "symplectic_euler", [&](phase_state<Vec>& y) {
+    detail::guarded_step<System>(x, h, "symplectic_euler", [&](phase_state<Vec>& y) {
       Vec f = y.q, v = y.p;
       system.force(y.q, f);
       detail::axpy(y.p, h, f);
@@ -229,7 +248,7 @@ class stormer_verlet {
   explicit stormer_verlet(System system) : system_(std::move(system)) {}
 
   void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) {
-    detail::guarded_step(x, h, "stormer_verlet", [&](phase_state<Vec>& y) { substep(y, h); });
+    detail::guarded_step<System>(x, h, "stormer_verlet", [&](phase_state<Vec>& y) { substep(y, h); });
   }
 
   /// One Verlet step without the finiteness check (used by compositions).
@@ -288,7 +307,7 @@ class composition {
       : verlet_(std::move(system)), weights_(triple_jump_weights<real_type_t<scalar>>(Order)) {}
 
   void operator()(phase_state<Vec>& x, const scalar& h) {
-    detail::guarded_step(x, h, "composition", [&](phase_state<Vec>& y) {
+    detail::guarded_step<System>(x, h, "composition", [&](phase_state<Vec>& y) {
       for (const auto& w : weights_) {
         const scalar hw = lift<scalar>(w) * h;
         verlet_.substep(y, hw);
@@ -313,10 +332,16 @@ struct gauss_legendre_tableau {
   std::vector<R> c, b;
   std::vector<std::vector<R>> a;
 
-  explicit gauss_legendre_tableau(int s) : stages(s), c(s), b(s), a(s, std::vector<R>(s)) {
+  /// Throws domain_error unless 1 <= s <= 8 (before any storage is sized by s).
+  static int checked(int s) {
     if (s < 1 || s > 8)
       throw domain_error("gauss_legendre_tableau: stages must be in 1..8, got " +
                          std::to_string(s));
+    return s;
+  }
+
+  explicit gauss_legendre_tableau(int s)
+      : stages(checked(s)), c(s), b(s), a(s, std::vector<R>(s)) {
     using boost::math::legendre_p;
     using boost::math::legendre_p_prime;
     using std::abs;
@@ -375,7 +400,7 @@ class gauss_legendre {
   explicit gauss_legendre(System system) : system_(std::move(system)), tableau_(Stages) {}
 
   void operator()(phase_state<Vec>& x, const scalar& h) {
-    detail::guarded_step(x, h, "gauss_legendre", [&](phase_state<Vec>& y) { step(y, h); });
+    detail::guarded_step<System>(x, h, "gauss_legendre", [&](phase_state<Vec>& y) { step(y, h); });
   }
 
   const gauss_legendre_tableau<real>& tableau() const { return tableau_; }
@@ -492,6 +517,8 @@ class gauss_legendre {
 /// Advance x by `steps` steps of size h.
 template <class Stepper, class Vec>
 void integrate(Stepper& step, phase_state<Vec>& x, const typename Vec::Scalar& h, long steps) {
+  if (steps < 0)
+    throw domain_error("integrate: steps must be non-negative, got " + std::to_string(steps));
   for (long i = 0; i < steps; ++i) step(x, h);
 }
 

@@ -129,6 +129,11 @@ struct harmonic_oscillator_system {
 template <class T>
 struct pendulum_system {
   T mass, length, gravity;
+  pendulum_system(T m, T l, T g) : mass(std::move(m)), length(std::move(l)), gravity(std::move(g)) {
+    require_positive(mass, "pendulum_system", "mass");
+    require_positive(length, "pendulum_system", "length");
+    require_positive(gravity, "pendulum_system", "gravity");
+  }
   template <class Vec>
   void velocity(const Vec& p, Vec& dq) const {
     using S = typename Vec::Scalar;
@@ -168,6 +173,11 @@ template <class T, class Pair>
 struct pair_force_system {
   std::vector<T> masses;
   Pair pair;
+
+  pair_force_system(std::vector<T> m, Pair u) : masses(std::move(m)), pair(std::move(u)) {
+    for (std::size_t i = 0; i < masses.size(); ++i)
+      require_positive(masses[i], "pair_force_system", ("mass " + std::to_string(i)).c_str());
+  }
 
   Eigen::Index particles() const { return static_cast<Eigen::Index>(masses.size()); }
 

@@ -29,15 +29,28 @@ struct lagrangian_jet {
 namespace detail {
 template <class T>
 void require_state(const dynamic_vector<T>& q, const dynamic_vector<T>& qdot, const T& t,
-                   const std::string& where) {
+                   const std::string& where, const std::string& second = "qdot") {
   if (q.size() != qdot.size())
-    throw dimension_error(where + ": q has " + std::to_string(q.size()) +
-                          " components but qdot has " + std::to_string(qdot.size()));
+    throw dimension_error(where + ": q has " + std::to_string(q.size()) + " components but " +
+                          second + " has " + std::to_string(qdot.size()));
   if (const auto i = first_non_finite(q); i >= 0)
     throw non_finite_error(where + ": q[" + std::to_string(i) + "] = " + to_text(q(i)));
   if (const auto i = first_non_finite(qdot); i >= 0)
-    throw non_finite_error(where + ": qdot[" + std::to_string(i) + "] = " + to_text(qdot(i)));
+    throw non_finite_error(where + ": " + second + "[" + std::to_string(i) + "] = " +
+                           to_text(qdot(i)));
   if (!is_finite(t)) throw non_finite_error(where + ": t = " + to_text(t));
+}
+
+/// require_state and a finite acceleration qddot of the same length.
+template <class T>
+void require_path(const dynamic_vector<T>& q, const dynamic_vector<T>& qdot,
+                  const dynamic_vector<T>& qddot, const T& t, const std::string& where) {
+  require_state(q, qdot, t, where);
+  if (qddot.size() != q.size())
+    throw dimension_error(where + ": q has " + std::to_string(q.size()) +
+                          " components but qddot has " + std::to_string(qddot.size()));
+  if (const auto i = first_non_finite(qddot); i >= 0)
+    throw non_finite_error(where + ": qddot[" + std::to_string(i) + "] = " + to_text(qddot(i)));
 }
 
 template <class T>
@@ -124,6 +137,7 @@ template <class T, class L>
 dynamic_vector<T> euler_lagrange_residual(const L& lag, const dynamic_vector<T>& q,
                                           const dynamic_vector<T>& qdot,
                                           const dynamic_vector<T>& qddot, const T& t) {
+  detail::require_path(q, qdot, qddot, t, "euler_lagrange_residual");
   const auto j = lagrangian_jet_at(lag, q, qdot, t, "euler_lagrange_residual");
   return j.kinetic * qddot + j.mixed * qdot + j.qdot_t - j.dq;
 }
@@ -132,6 +146,7 @@ dynamic_vector<T> euler_lagrange_residual(const L& lag, const dynamic_vector<T>&
 template <class T, class L>
 T energy_function(const L& lag, const dynamic_vector<T>& q, const dynamic_vector<T>& qdot,
                   const T& t) {
+  detail::require_state(q, qdot, t, "energy_function");
   const auto p = generalized_momenta(lag, q, qdot, t);
   const T l = lag(q, qdot, t);
   return qdot.dot(p) - l;

@@ -17,6 +17,11 @@ template <class P>
 struct power_law_pair {
   P c;
   int k;
+  power_law_pair(P c_, int k_) : c(std::move(c_)), k(k_) {
+    require_finite_value(c, "power_law_pair", "c");
+    if (k == 0)
+      throw domain_error("power_law_pair: exponent k must be a non-zero integer, got k = 0");
+  }
   template <class S>
   S operator()(const S& r) const {
     S rk = lift<S>(1);
@@ -31,6 +36,10 @@ struct power_law_pair {
 template <class P>
 struct lennard_jones_pair {
   P depth, size;
+  lennard_jones_pair(P e, P s) : depth(std::move(e)), size(std::move(s)) {
+    require_positive(depth, "lennard_jones_pair", "depth");
+    require_positive(size, "lennard_jones_pair", "size");
+  }
   template <class S>
   S operator()(const S& r) const {
     const S x = lift<S>(size) * inverse(r);
@@ -48,6 +57,11 @@ struct lennard_jones_pair {
 template <class P>
 struct morse_pair {
   P depth, width, r0;
+  morse_pair(P d, P a, P r) : depth(std::move(d)), width(std::move(a)), r0(std::move(r)) {
+    require_positive(depth, "morse_pair", "depth");
+    require_positive(width, "morse_pair", "width");
+    require_positive(r0, "morse_pair", "r0");
+  }
   template <class S>
   S operator()(const S& r) const {
     using std::exp;
@@ -74,6 +88,10 @@ struct no_field {
 template <class P>
 struct vertical_field {
   P a, b;
+  vertical_field(P a_, P b_) : a(std::move(a_)), b(std::move(b_)) {
+    require_finite_value(a, "vertical_field", "a");
+    require_finite_value(b, "vertical_field", "b");
+  }
   template <class S>
   S operator()(const S& z) const {
     const S az = lift<S>(a) * z;

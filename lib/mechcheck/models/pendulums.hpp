@@ -12,7 +12,7 @@ namespace detail {
 template <class S>
 void require_dof(const dynamic_vector<S>& q, Eigen::Index n, const char* where) {
   if (q.size() != n)
-    throw dimension_error(std::string(where) + ": needs " + std::to_string(n) +
+    throw dimension_error(std::string(where) + ": q needs " + std::to_string(n) +
                           " coordinates, got " + std::to_string(q.size()));
 }
 }  // namespace detail
@@ -116,12 +116,19 @@ struct spherical_pendulum {
 template <class P>
 struct spring_pendulum {
   P mass, stiffness, length, gravity;
+  spring_pendulum(P m, P k, P l, P g)
+      : mass(std::move(m)), stiffness(std::move(k)), length(std::move(l)), gravity(std::move(g)) {
+    require_positive(mass, "spring_pendulum", "mass");
+    require_positive(stiffness, "spring_pendulum", "stiffness");
+    require_positive(length, "spring_pendulum", "length");
+    require_positive(gravity, "spring_pendulum", "gravity");
+  }
   template <class S>
   S operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& qdot, const S&) const {
     using std::cos;
     detail::require_dof(q, 2, "spring_pendulum");
     const S m = lift<S>(mass), k = lift<S>(stiffness), g = lift<S>(gravity);
-    const S r = lift<S>(length) + q(0);
+    const S r = arm(q);
     const S radial = qdot(0) * qdot(0);
     const S angular = r * r * qdot(1) * qdot(1);
     const S kinetic = m * (radial + angular) * half<S>();
@@ -132,11 +139,21 @@ struct spring_pendulum {
     return l1 + gravity_term;
   }
   /// Cartesian position (X, Y) = ((l + x) sin theta, -(l + x) cos theta) of a state.
+  /// The arm l + x; throws domain_error when it is not positive (the bob through the pivot).
+  template <class S>
+  S arm(const dynamic_vector<S>& q) const {
+    const S r = lift<S>(length) + q(0);
+    if (!(innermost_value(r) > 0))
+      throw domain_error("spring_pendulum: the arm l + x must be positive, got l + x = " +
+                         to_text(r) + " at extension q[0] = " + to_text(q(0)));
+    return r;
+  }
   template <class S>
   dynamic_vector<S> position(const dynamic_vector<S>& q) const {
     using std::cos;
     using std::sin;
-    const S r = lift<S>(length) + q(0);
+    detail::require_dof(q, 2, "spring_pendulum::position");
+    const S r = arm(q);
     dynamic_vector<S> out(2);
     out(0) = r * sin(q(1));
     out(1) = -(r * cos(q(1)));
@@ -149,6 +166,13 @@ struct spring_pendulum {
 template <class P>
 struct spring_pendulum_cartesian {
   P mass, stiffness, length, gravity;
+  spring_pendulum_cartesian(P m, P k, P l, P g)
+      : mass(std::move(m)), stiffness(std::move(k)), length(std::move(l)), gravity(std::move(g)) {
+    require_positive(mass, "spring_pendulum_cartesian", "mass");
+    require_positive(stiffness, "spring_pendulum_cartesian", "stiffness");
+    require_positive(length, "spring_pendulum_cartesian", "length");
+    require_positive(gravity, "spring_pendulum_cartesian", "gravity");
+  }
   template <class S>
   S operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& qdot, const S&) const {
     using std::sqrt;
@@ -179,6 +203,15 @@ struct spring_pendulum_cartesian {
 template <class P>
 struct rotating_pivot_pendulum {
   P mass, length, gravity, radius, omega;
+  rotating_pivot_pendulum(P m, P l, P g, P big_r, P w)
+      : mass(std::move(m)), length(std::move(l)), gravity(std::move(g)), radius(std::move(big_r)),
+        omega(std::move(w)) {
+    require_positive(mass, "rotating_pivot_pendulum", "mass");
+    require_positive(length, "rotating_pivot_pendulum", "length");
+    require_positive(gravity, "rotating_pivot_pendulum", "gravity");
+    require_non_negative(radius, "rotating_pivot_pendulum", "radius");
+    require_finite_value(omega, "rotating_pivot_pendulum", "omega");
+  }
   template <class S>
   S operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& qdot, const S& t) const {
     using std::cos;

@@ -39,6 +39,7 @@ auto along_direction(const Phi& phi, const dynamic_vector<T>& q, const dynamic_v
 template <class T, class Phi>
 T total_time_derivative(const Phi& phi, const dynamic_vector<T>& q, const dynamic_vector<T>& qdot,
                         const dynamic_vector<T>& qddot, const T& t) {
+  detail::require_path(q, qdot, qddot, t, "total_time_derivative");
   const auto y = detail::along_direction(phi, q, qdot, t, qdot, qddot, lift<T>(1));
   return derivatives_of(y, 1)(0);
 }
@@ -48,6 +49,7 @@ template <class T, class Phi>
 dynamic_vector<T> total_time_derivative_vector(const Phi& phi, const dynamic_vector<T>& q,
                                                const dynamic_vector<T>& qdot,
                                                const dynamic_vector<T>& qddot, const T& t) {
+  detail::require_path(q, qdot, qddot, t, "total_time_derivative_vector");
   const auto y = detail::along_direction(phi, q, qdot, t, qdot, qddot, lift<T>(1));
   dynamic_vector<T> out(y.size());
   for (Eigen::Index i = 0; i < y.size(); ++i) out(i) = derivatives_of(y(i), 1)(0);
@@ -59,6 +61,7 @@ dynamic_vector<T> total_time_derivative_vector(const Phi& phi, const dynamic_vec
 template <class T, class L, class G>
 T lagrangian_variation(const L& lag, const G& generator, const dynamic_vector<T>& q,
                        const dynamic_vector<T>& qdot, const dynamic_vector<T>& qddot, const T& t) {
+  detail::require_path(q, qdot, qddot, t, "lagrangian_variation");
   const dynamic_vector<T> g = generator(q, qdot, t);
   if (g.size() != q.size())
     throw dimension_error("lagrangian_variation: the generator returned " +
@@ -73,6 +76,7 @@ T lagrangian_variation(const L& lag, const G& generator, const dynamic_vector<T>
 template <class T, class L, class G, class F>
 T symmetry_defect(const L& lag, const G& generator, const F& f, const dynamic_vector<T>& q,
                   const dynamic_vector<T>& qdot, const dynamic_vector<T>& qddot, const T& t) {
+  detail::require_path(q, qdot, qddot, t, "symmetry_defect");
   const T variation = lagrangian_variation(lag, generator, q, qdot, qddot, t);
   const T df = total_time_derivative(f, q, qdot, qddot, t);
   return variation - df;
@@ -82,6 +86,7 @@ T symmetry_defect(const L& lag, const G& generator, const F& f, const dynamic_ve
 template <class T, class L, class G, class F>
 T noether_charge(const L& lag, const G& generator, const F& f, const dynamic_vector<T>& q,
                  const dynamic_vector<T>& qdot, const T& t) {
+  detail::require_state(q, qdot, t, "noether_charge");
   const dynamic_vector<T> p = generalized_momenta(lag, q, qdot, t);
   const dynamic_vector<T> g = generator(q, qdot, t);
   T pg = lift<T>(0);  // a loop, not p.dot(g): Eigen's reductions need Scalar(0)

@@ -12,7 +12,7 @@ namespace detail {
 template <class S>
 void require_three_dof(const dynamic_vector<S>& q, const char* where) {
   if (q.size() != 3)
-    throw dimension_error(std::string(where) + ": needs 3 degrees of freedom (Cartesian r), got " +
+    throw dimension_error(std::string(where) + ": q needs 3 degrees of freedom (Cartesian r), got " +
                           std::to_string(q.size()));
 }
 template <class S>
@@ -110,6 +110,11 @@ template <class P>
 struct power_law_potential {
   P k;
   int n;
+  power_law_potential(P k_, int n_) : k(std::move(k_)), n(n_) {
+    require_finite_value(k, "power_law_potential", "k");
+    if (n == 0)
+      throw domain_error("power_law_potential: exponent n must be a non-zero integer, got n = 0");
+  }
   template <class S>
   S operator()(const S& r) const {
     S rn = lift<S>(1);

@@ -22,14 +22,15 @@ namespace mechcheck {
 template <class T>
 struct free_rigid_body {
   vector3<T> moments;
+  /// The state is (M, attitude), 3 and 9 components: not a canonical pair.
+  static constexpr bool canonical = false;
 
   /// Throws domain_error unless the moments are positive, finite and satisfy the
   /// triangle inequality of eqs 154-156.
   explicit free_rigid_body(vector3<T> principal_moments) : moments(std::move(principal_moments)) {
     for (int i = 0; i < 3; ++i)
-      if (!(is_finite(moments(i)) && moments(i) > 0))
-        throw domain_error("free_rigid_body: principal moment I" + std::to_string(i + 1) +
-                           " must be positive and finite, got " + to_text(moments(i)));
+      require_positive(moments(i), "free_rigid_body",
+                       ("principal moment I" + std::to_string(i + 1)).c_str());
     validate_inertia(matrix3<T>(moments.asDiagonal()), "free_rigid_body");
   }
 

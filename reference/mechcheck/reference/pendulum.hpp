@@ -41,8 +41,9 @@ class pendulum_motion {
     const T c = rate / (2 * w0_);
     const T k2 = s * s + c * c;
     if (!(k2 < 1))
-      throw domain_error("pendulum_motion: the motion is not an oscillation (sin^2(theta_max/2) "
-                         "= " + to_text(k2) + " >= 1)");
+      throw domain_error("pendulum_motion: the motion from theta0 = " + to_text(theta0) +
+                         ", p0 = " + to_text(p0) + " is not an oscillation (sin^2(theta_max/2) = " +
+                         to_text(k2) + " >= 1)");
     k_ = sqrt(k2);
     u0_ = k_ == 0 ? T(0) : T(boost::math::ellint_1(k_, T(atan2(T(s / k_), T(c / k_)))));
   }

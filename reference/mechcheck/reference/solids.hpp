@@ -24,6 +24,8 @@ matrix3<T> box_inertia(const T& mass, const T& a, const T& b, const T& c) {
 /// Cube of edge l: M l^2 / 6 times the identity (eqs 161-163).
 template <class T>
 matrix3<T> cube_inertia(const T& mass, const T& l) {
+  require_positive(mass, "cube_inertia", "mass");
+  require_positive(l, "cube_inertia", "edge l");
   return box_inertia(mass, l, l, l);
 }
 
@@ -68,6 +70,8 @@ matrix3<T> thin_rod_inertia(const T& mass, const T& length) {
 template <class T>
 matrix3<T> tetrahedron_inertia(const T& mass, const std::array<vector3<T>, 4>& v) {
   require_positive(mass, "tetrahedron_inertia", "mass");
+  for (int i = 0; i < 4; ++i)
+    require_finite_vector(v[i], "tetrahedron_inertia", ("vertex " + std::to_string(i)).c_str());
   matrix3<T> c = matrix3<T>::Zero();
   vector3<T> s = vector3<T>::Zero();
   for (const auto& x : v) {
@@ -83,6 +87,10 @@ matrix3<T> tetrahedron_inertia(const T& mass, const std::array<vector3<T>, 4>& v
 template <class T>
 point_cloud<T> box_points(const T& mass, const T& a, const T& b, const T& c) {
   using std::sqrt;
+  require_positive(mass, "box_points", "mass");
+  require_positive(a, "box_points", "edge a");
+  require_positive(b, "box_points", "edge b");
+  require_positive(c, "box_points", "edge c");
   const T g = 1 / (2 * sqrt(T(3)));
   point_cloud<T> cloud;
   for (int k = 0; k < 8; ++k) {
@@ -99,6 +107,9 @@ point_cloud<T> box_points(const T& mass, const T& a, const T& b, const T& c) {
 template <class T>
 point_cloud<T> tetrahedron_points(const T& mass, const std::array<vector3<T>, 4>& v) {
   using std::sqrt;
+  require_positive(mass, "tetrahedron_points", "mass");
+  for (int i = 0; i < 4; ++i)
+    require_finite_vector(v[i], "tetrahedron_points", ("vertex " + std::to_string(i)).c_str());
   const T root5 = sqrt(T(5));
   const T alpha = (5 + 3 * root5) / 20, beta = (5 - root5) / 20;
   point_cloud<T> cloud;

@@ -22,6 +22,24 @@ struct free_symmetric_top {
   T i1, i3, momentum;  ///< I1 = I2, I3, |M|
   T phi0, theta0, psi0;
 
+  /// Throws domain_error unless I1, I3 and |M| are positive and I3 <= 2 I1 (the triangle
+  /// inequality I3 <= I1 + I2 of a body's principal moments), non_finite_error for a
+  /// non-finite angle.
+  free_symmetric_top(T i1_, T i3_, T m, T phi, T theta, T psi)
+      : i1(std::move(i1_)), i3(std::move(i3_)), momentum(std::move(m)), phi0(std::move(phi)),
+        theta0(std::move(theta)), psi0(std::move(psi)) {
+    require_positive(i1, "free_symmetric_top", "I1");
+    require_positive(i3, "free_symmetric_top", "I3");
+    require_positive(momentum, "free_symmetric_top", "|M|");
+    if (!(i3 <= 2 * i1))
+      throw domain_error("free_symmetric_top: I3 = " + to_text(i3) +
+                         " exceeds I1 + I2 = 2 I1 = " + to_text(T(2 * i1)) +
+                         " (the triangle inequality of principal moments)");
+    require_finite_value(phi0, "free_symmetric_top", "phi0");
+    require_finite_value(theta0, "free_symmetric_top", "theta0");
+    require_finite_value(psi0, "free_symmetric_top", "psi0");
+  }
+
   T omega3() const {
     using std::cos;
     return momentum * cos(theta0) / i3;  // M_3 = M cos theta (eq 225)
