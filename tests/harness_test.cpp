@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <thread>
 
 #include <sys/wait.h>
@@ -15,6 +16,7 @@
 
 #include "mechcheck/harness/generators.hpp"
 #include "mechcheck/harness/law.hpp"
+#include "mechcheck/harness/coverage.hpp"
 #include "mechcheck/harness/report.hpp"
 
 namespace {
@@ -338,5 +340,68 @@ TEST(harness_faults, the_report_refuses_missing_truncated_and_malformed_rows) {
     EXPECT_FALSE(std::filesystem::exists(out / "laws.json")) << what;
   }
   std::filesystem::remove_all(dir);
+}
+
+// --- the equation map ---------------------------------------------------------------------
+
+law_result row_naming(const std::string& id, std::vector<std::string> equations,
+                      expectation expect = expectation::holds) {
+  law_result r;
+  r.info.id = id;
+  r.info.equations = std::move(equations);
+  r.info.expect = expect;
+  return r;
+}
+
+std::vector<equation_entry> map_of(const std::string& text) {
+  const auto file = std::filesystem::temp_directory_path() / "mechcheck_equations_test.tsv";
+  std::ofstream(file) << text;
+  auto map = read_equation_map(file);
+  std::filesystem::remove(file);
+  return map;
+}
+
+TEST(harness_coverage, a_consistent_map_passes_and_counts) {
+  const std::vector<law_result> rows{row_naming("a.law", {"1", "2"}),
+                                     row_naming("a.erratum", {"2"}, expectation::falsified)};
+  const auto c = check_coverage(map_of("# comment\n1\tlaw\ta.law\n2\tlaw\ta.erratum,a.law\n"
+                                       "3\tderivation\t1\tstep\n4\tuncheckable\t\tphysics\n"
+                                       "5\topen\t\tno law yet\nclaim:x\topen\t\tsome claim\n"),
+                                rows, 5);
+  EXPECT_TRUE(c.problems.empty()) << c.problems.front();
+  EXPECT_EQ(c.line(), "5 numbered equations: 2 asserted by a law, 0 by errata alone, 1 "
+                      "derivation steps, 1 not checkable, 1 open (no law yet), 0 unclassified; "
+                      "1 unnumbered claims");
+}
+
+TEST(harness_coverage, every_disagreement_is_a_problem) {
+  const std::vector<law_result> rows{row_naming("a.law", {"1", "2"})};
+  const auto problems = [&](const std::string& text) {
+    return check_coverage(map_of(text), rows, 3).problems;
+  };
+  const auto has = [](const std::vector<std::string>& p, const std::string& what) {
+    for (const auto& s : p)
+      if (s.find(what) != std::string::npos) return true;
+    return false;
+  };
+  const std::string rest = "2\tlaw\ta.law\n3\topen\t\tx\n";
+  EXPECT_TRUE(has(problems("1\tlaw\ta.law\n2\tlaw\ta.law\n"), "equation 3 is unclassified"));
+  EXPECT_TRUE(has(problems("1\tlaw\ta.law,b.gone\n" + rest), "names law b.gone, which does not"));
+  EXPECT_TRUE(has(problems("1\topen\t\tx\n" + rest), "is marked open, but a.law list it"));
+  EXPECT_TRUE(has(problems("1\tlaw\ta.law\n2\tderivation\t3\tx\n3\topen\t\tx\n"),
+                  "asserted through 3, which no law asserts"));
+  EXPECT_TRUE(has(problems("1\tlaw\ta.law\n1\tlaw\ta.law\n" + rest), "in the map twice"));
+  EXPECT_THROW(map_of("1\tmaybe\ta.law\n"), std::runtime_error);
+  EXPECT_THROW(map_of("1\tuncheckable\n"), std::runtime_error);  // no reason given
+  EXPECT_THROW(map_of("x1\tlaw\ta.law\n"), std::runtime_error);
+}
+
+TEST(harness_coverage, the_repository_map_classifies_every_equation) {
+  // The map in this tree parses, covers 1..325 once, and names only existing statuses;
+  // agreement with the laws is checked by ci/properties, which has the rows.
+  const auto map = read_equation_map(MECHCHECK_EQUATION_MAP);
+  std::set<std::string> seen;
+  for (const auto& e : map) EXPECT_TRUE(seen.insert(e.equation).second) << e.equation;
+  for (int n = 1; n <= 325; ++n) EXPECT_TRUE(seen.count(std::to_string(n))) << n;
 }
 }  // namespace

@@ -153,7 +153,8 @@ std::vector<law_result> read_rows(const std::filesystem::path& dir) {
   return rows;
 }
 
-void write_report(const std::vector<law_result>& rows, const std::filesystem::path& dir) {
+void write_report(const std::vector<law_result>& rows, const std::filesystem::path& dir,
+                  const coverage* equations) {
   std::filesystem::create_directories(dir);
   json doc;
   doc["laws"] = json::array();
@@ -161,13 +162,25 @@ void write_report(const std::vector<law_result>& rows, const std::filesystem::pa
   for (const auto& r : rows)
     doc[r.info.expect == expectation::holds ? "laws" : "errata"].push_back(to_json(r));
   doc["base_seed"] = rows.empty() ? 0 : rows.front().base_seed;
+  if (equations) {
+    json c;
+    c["numbered"] = equations->numbered;
+    for (const auto& [status, n] : equations->by_status) c[status] = n;
+    c["unclassified"] = equations->unclassified;
+    c["claims"] = equations->claims;
+    c["problems"] = equations->problems;
+    c["summary"] = equations->line();
+    doc["coverage"] = c;
+  }
   write_file_atomically(dir / "laws.json", doc.dump(2) + "\n");
 
   std::ostringstream md;
   md << "# Law report\n\n"
      << "Residuals are in units of the tier's epsilon times the law's natural scale; the "
         "budget is the tolerance the law derives from its computation. Truncation-model "
-        "laws give the range of fitted exponent minus the model's, and its tolerance.\n\n"
+        "laws give the range of fitted exponent minus the model's, and its tolerance.\n\n";
+  if (equations) md << "Coverage of the notes: " << equations->line() << ".\n\n";
+  md
      << "| law | title | eqs | tier | digits | cases | max eps | RMS eps | budget | "
         "model: exponent - p, rel. deviation | result |\n"
      << "|---|---|---|---|---:|---:|---:|---:|---:|---|---|\n";

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "mechcheck/harness/coverage.hpp"
 #include "mechcheck/harness/result.hpp"
 
 namespace mechcheck::harness {
@@ -20,8 +21,9 @@ void write_row(const law_result& row, const std::filesystem::path& dir);
 /// Read every row written by write_row in dir, sorted by id and then digits.
 std::vector<law_result> read_rows(const std::filesystem::path& dir);
 
-/// laws.json and laws.md in dir.
-void write_report(const std::vector<law_result>& rows, const std::filesystem::path& dir);
+/// laws.json and laws.md in dir; with the equation coverage when given.
+void write_report(const std::vector<law_result>& rows, const std::filesystem::path& dir,
+                  const coverage* equations = nullptr);
 
 /// The law table as aligned plain text.
 std::string format_table(const std::vector<law_result>& rows);

@@ -1,8 +1,11 @@
-/// mechcheck_report --rows DIR --out DIR [--expect FILE]
+/// mechcheck_report --rows DIR --out DIR [--expect FILE] [--equations MAP --numbered N]
 /// Gathers the rows the property tests wrote, writes laws.json and laws.md, prints the
 /// law table, and exits 1 when a law failed or an expected row (a line of FILE, as
-/// printed by `<property executable> --list-laws`) is missing.
+/// printed by `<property executable> --list-laws`) is missing. With an equation map
+/// (coverage.hpp) it prints the coverage line, puts it in the report, and exits 1 when an
+/// equation 1..N is unclassified or the map and the laws' equation lists disagree.
 
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <set>
@@ -12,12 +15,15 @@
 
 int main(int argc, char** argv) {
   using namespace mechcheck::harness;
-  std::string rows_dir, out_dir, expect_file;
+  std::string rows_dir, out_dir, expect_file, equations_file;
+  int numbered = 0;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
     if (key == "--rows") rows_dir = argv[i + 1];
     else if (key == "--out") out_dir = argv[i + 1];
     else if (key == "--expect") expect_file = argv[i + 1];
+    else if (key == "--equations") equations_file = argv[i + 1];
+    else if (key == "--numbered") numbered = std::atoi(argv[i + 1]);
     else {
       std::cerr << "mechcheck_report: unknown option " << key << "\n";
       return 2;
@@ -27,10 +33,17 @@ int main(int argc, char** argv) {
     std::cerr << "usage: mechcheck_report --rows DIR --out DIR [--expect FILE]\n";
     return 2;
   }
+  if (!equations_file.empty() && numbered <= 0) {
+    std::cerr << "mechcheck_report: --equations needs --numbered N (the last equation)\n";
+    return 2;
+  }
   std::vector<law_result> rows;
+  coverage equations;
   try {
     rows = read_rows(rows_dir);
-    write_report(rows, out_dir);
+    if (!equations_file.empty())
+      equations = check_coverage(read_equation_map(equations_file), rows, numbered);
+    write_report(rows, out_dir, equations_file.empty() ? nullptr : &equations);
   } catch (const std::exception& e) {
     // A missing, truncated or malformed row leaves no report at all: a partial one could
     // claim a pass for a law whose row was lost.
@@ -57,6 +70,14 @@ int main(int argc, char** argv) {
       }
     }
   }
+  int coverage_problems = 0;
+  if (!equations_file.empty()) {
+    std::cout << "\ncoverage: " << equations.line() << "\n";
+    for (const auto& p : equations.problems) {
+      ++coverage_problems;
+      std::cout << "COVERAGE " << p << "\n";
+    }
+  }
   std::size_t laws = 0, errata = 0;
   std::set<std::string> ids;
   for (const auto& r : rows) {
@@ -67,5 +88,5 @@ int main(int argc, char** argv) {
             << " erratum rows: " << rows.size() - failed << " passed, " << failed << " failed"
             << (missing ? ", " + std::to_string(missing) + " missing" : std::string()) << "\n"
             << "report: " << out_dir << "/laws.json, " << out_dir << "/laws.md\n";
-  return failed || missing ? 1 : 0;
+  return failed || missing || coverage_problems ? 1 : 0;
 }

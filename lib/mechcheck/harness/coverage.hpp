@@ -1,0 +1,53 @@
+#pragma once
+/// The equation map: every numbered equation of the notes (and every checkable claim the
+/// text makes without a number) with what asserts it, checked against the laws' own
+/// `equations` lists. The map is a tab-separated file, one entry a line:
+///
+///     <equation>  <status>  <references>  <note>
+///
+/// equation:   a number (1..N) or "claim:<name>" for an unnumbered statement;
+/// status:     law         references = the ids of every law or erratum row naming it;
+///             erratum     the same, when only errata name it (the printed form is wrong);
+///             derivation  references = the equation whose law asserts this line's whole
+///                         content (an intermediate step of a derivation); note says how;
+///             uncheckable note says why (a statement of physics, a definition of notation);
+///             open        checkable, no law yet (reported, so the gap stays visible).
+/// Lines starting with '#' and blank lines are comments.
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "mechcheck/harness/result.hpp"
+
+namespace mechcheck::harness {
+
+struct equation_entry {
+  std::string equation, status;
+  std::vector<std::string> references;
+  std::string note;
+  int line = 0;
+};
+
+/// Reads the map; throws std::runtime_error naming the file and line of a malformed entry.
+std::vector<equation_entry> read_equation_map(const std::filesystem::path& file);
+
+struct coverage {
+  int numbered = 0;                ///< equations 1..N
+  std::map<std::string, int> by_status;  ///< law, erratum, derivation, uncheckable, open
+  int unclassified = 0;            ///< numbered equations missing from the map
+  int claims = 0;                  ///< unnumbered claims in the map
+  std::vector<std::string> problems;  ///< each a reason to fail
+
+  /// "325 equations: 235 by a law, 9 by errata, ... ; 0 unclassified; 4 claims".
+  std::string line() const;
+};
+
+/// Checks the map against the rows: every equation 1..last classified once; every law id
+/// the map names exists; a law's equations and the map agree both ways; a derivation step
+/// points at an equation a law asserts.
+coverage check_coverage(const std::vector<equation_entry>& map,
+                        const std::vector<law_result>& rows, int last_equation);
+
+}  // namespace mechcheck::harness
