@@ -70,7 +70,8 @@ void require_finite_value(const P& value, const char* where, const char* what) {
 }
 
 /// Throws domain_error "where: what must be positive and finite, got value"; a subnormal
-/// value is refused too (its reciprocal overflows, and no physical scale is that small).
+/// value is refused too (it has lost precision, the reciprocal of most overflows, and no
+/// physical scale is that small).
 template <class P>
 void require_positive(const P& value, const char* where, const char* what) {
   using R = real_type_t<P>;
