@@ -36,6 +36,29 @@ TEST(dynamics_errors, singular_kinetic_matrix) {
             std::string::npos);
 }
 
+// Newton for p = dL/dqdot starts at qdot = 0; for the relativistic particle,
+// p = m v / sqrt(1 - v^2), its first step p/m leaves |v| < 1 whenever |p| > m and must be
+// halved back. The solution is exactly v = p / sqrt(m^2 + p^2).
+TEST(legendre, relativistic_particle_steps_back_inside_the_light_cone) {
+  using pair = models::power_law_pair<double>;
+  const models::velocity_coupled_system<double, pair> particle(
+      {2.0}, pair(1.0, -1), models::kinetic_form::relativistic, 0.0, 0.0);
+  dynamic_vector<double> q(3), p(3);
+  q << 0.1, -0.2, 0.3;
+  for (const double size : {0.5, 3.0, 40.0, 1e4, 1e8}) {
+    p << size, -size / 2, size / 4;
+    const dynamic_vector<double> v = velocities_from_momenta(particle, q, p, 0.0);
+    const dynamic_vector<double> exact = p / std::sqrt(4.0 + p.squaredNorm());
+    for (int i = 0; i < 3; ++i) EXPECT_TRUE(near_eps(v(i), exact(i), 16)) << size;
+  }
+  dynamic_vector<double> fast(3);
+  fast << 0.9, 0.5, 0.0;
+  EXPECT_THROW(particle(q, fast, 0.0), domain_error);
+  EXPECT_EQ(message_of([&] { particle(q, fast, 0.0); }),
+            "velocity_coupled_system: relativistic particle 0 has |v|^2 = 1.0600000000000001, "
+            "not below c^2 = 1");
+}
+
 TEST(dynamics_errors, non_finite_and_mismatched_state) {
   const models::free_particle<double> free(1.0);
   dynamic_vector<double> q(2), v(3);

@@ -173,6 +173,21 @@ void models_and_lagrangians(tally& t) {
   t.sweep("particle_system", {{"mass 0", pos}, {"mass 1", pos}}, {1, 2}, [](const args& a) {
     models::particle_system<double, models::power_law_pair<double>>({a[0], a[1]}, {1.0, -1});
   });
+  t.sweep("velocity_coupled_system",
+          {{"mass 0", pos}, {"mass 1", pos}, {"beta", nonneg}, {"kappa", fin}}, {1, 2, 0.5, 0.1},
+          [](const args& a) {
+            models::velocity_coupled_system<double, models::power_law_pair<double>>(
+                {a[0], a[1]}, {1.0, -1}, models::kinetic_form::quartic, a[2], a[3]);
+          });
+  {
+    const models::velocity_coupled_system<double, models::power_law_pair<double>> light(
+        {1.0}, {1.0, -1}, models::kinetic_form::relativistic, 0.0, 0.0);
+    for (double v : {1.0, -1.5, 1e3})
+      t.refuse("velocity_coupled_system", "|v|^2", mc::to_text(v * v),
+               [&] { light(vec({0, 0, 0}), vec({v, 0, 0}), 0.0); });
+    t.refuse("velocity_coupled_system", "coordinates", "got 2",
+             [&] { light(vec({0, 0}), vec({0, 0}), 0.0); });
+  }
   t.sweep("power_law_pair", {{"c", fin}}, {-1}, [](const args& a) { models::power_law_pair(a[0], 2); });
   t.refuse("power_law_pair", "exponent k", "0", [] { models::power_law_pair(1.0, 0); });
   t.sweep("lennard_jones_pair", {{"depth", pos}, {"size", pos}}, {1, 1},
@@ -491,6 +506,7 @@ void integrators(tally& t) {
   stepper_refuses(t, "symplectic_euler", mc::symplectic_euler<sys, DV>(osc));
   stepper_refuses(t, "stormer_verlet", mc::stormer_verlet<sys, DV>(osc));
   stepper_refuses(t, "composition", mc::composition<sys, DV, 4>(osc));
+  stepper_refuses(t, "mclachlan4", mc::mclachlan4<sys, DV>(osc));
   stepper_refuses(t, "gauss_legendre", mc::gauss_legendre<sys, DV, 2>(osc));
   // An implicit step that cannot converge: a stiff pendulum (w = 1000) with h = 1.
   for (double h : {1.0, 0.5, -1.0}) {

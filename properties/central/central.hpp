@@ -20,6 +20,7 @@ namespace gen = mechcheck::generators;
 using mc::dynamic_vector;
 using mc::lift;
 using mc::vector3;
+using mc::harness::at_least_one;
 using mc::harness::check_close;
 using mc::harness::check_zero;
 using mc::harness::law_info;

@@ -14,19 +14,19 @@ struct noether_conservation {
   // (a diagonal solve): scale sum |terms|, k = 8N + 16.
   template <class T>
   static void property() {
-    const auto s = *gen::particle_samples();
-    const auto u = *gen::pair_potentials();
+    const auto c = *gen::closed_particle_cases();
+    const auto& s = c.particles;
     const auto n = *gen::directions();
-    const auto which = *rc::gen::element(symmetry::translation, symmetry::rotation,
-                                         symmetry::time_translation, symmetry::boost);
-    RC_TAG(static_cast<int>(which));
-    const closed_system sys(s.masses, u);
+    const auto which = *symmetries_of(c);
+    RC_TAG(c.which, static_cast<int>(which));
     const auto q = s.template positions<T>();
     const auto v = s.template velocities<T>();
     const T t = T(*gen::coordinate());
-    with_symmetry<T>(which, sys, n, [&](const auto& g, const auto& f) {
-      const auto [rate, scale] = charge_rate(sys, g, f, q, v, t);
-      check_zero("dQ/dt on shell", rate, scale, 8.0 * s.particles() + 16);
+    with_closed_model(c, [&](const auto& sys) {
+      with_symmetry<T>(which, sys, n, [&](const auto& g, const auto& f) {
+        const auto [rate, scale] = charge_rate(sys, g, f, q, v, t);
+        check_zero("dQ/dt on shell", rate, scale, 8.0 * s.particles() + 16);
+      });
     });
   }
 };

@@ -19,6 +19,7 @@ namespace gen = mechcheck::generators;
 using mc::lift;
 using mc::matrix3;
 using mc::vector3;
+using mc::harness::at_least_one;
 using mc::harness::check_close;
 using mc::harness::check_zero;
 using mc::harness::law_info;

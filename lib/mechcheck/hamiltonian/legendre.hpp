@@ -61,17 +61,41 @@ dynamic_vector<S> velocities_from_momenta(const L& lag, const dynamic_vector<S>&
   const R eps = tier_epsilon<R>();
   // Converged when the step is at the rounding floor (4 eps relative), or when a step
   // near it (within 2^10 eps) no longer halves: Newton has stagnated on rounding noise.
+  // A Lagrangian defined on part of velocity space only (the relativistic particle,
+  // |qdot| < c) throws domain_error or is not finite outside it: a Newton step that
+  // leaves the domain is halved back into it (at most 60 times per step; halvings do not
+  // count against the 100 Newton steps).
   bool converged = false;
   R last_step = lift<R>(0);
   R previous_step = lift<R>(-1);
+  dynamic_vector<R> from = v, step = dynamic_vector<R>::Zero(n);
+  second_order<R> e;
+  dynamic_vector<R> residual;
+  // Expands L at v; returns why v is outside L's domain ("" when inside).
+  const auto expand = [&]() -> std::string {
+    try {
+      e = second_order_expansion(lr, v);
+    } catch (const domain_error& outside_domain) {
+      return outside_domain.what();
+    }
+    residual = e.gradient - pr;
+    if (first_non_finite(residual) >= 0 || first_non_finite(e.hessian) >= 0)
+      return "dL/dqdot is not finite";
+    return "";
+  };
   for (int iteration = 0; iteration < 100 && !converged; ++iteration) {
-    const auto e = second_order_expansion(lr, v);
-    const dynamic_vector<R> residual = e.gradient - pr;
-    if (first_non_finite(residual) >= 0)
-      throw non_finite_error("velocities_from_momenta: dL/dqdot is not finite at qdot = " + to_text(v) + ", " +
-                             state());
-    const dynamic_vector<R> step =
-        solve_kinetic(e.hessian, residual, "velocities_from_momenta", "qdot = " + to_text(v) + ", " + state());
+    for (int halvings = 0;; ++halvings) {
+      const std::string outside = expand();
+      if (outside.empty()) break;
+      if (iteration == 0 || halvings == 60)
+        throw non_finite_error("velocities_from_momenta: " + outside + " at qdot = " +
+                               to_text(v) + ", " + state());
+      step /= 2;
+      v = from - step;
+    }
+    step = solve_kinetic(e.hessian, residual, "velocities_from_momenta",
+                         "qdot = " + to_text(v) + ", " + state());
+    from = v;
     v -= step;
     last_step = step.template lpNorm<Eigen::Infinity>();
     const R size = v.template lpNorm<Eigen::Infinity>();

@@ -97,6 +97,12 @@ class recorder {
 /// The recorder of the law being run on this thread (null outside a law run).
 recorder*& active_recorder();
 
+/// max(x, 1): a scale for quantities of order one and below, whose rounding is absolute.
+template <class T>
+T at_least_one(const T& x) {
+  return x > 1 ? x : lift<T>(1);
+}
+
 /// Residual |computed - expected| / (epsilon(T) * scale), as a double; 0 when equal.
 template <class T>
 double residual_in_eps(const T& computed, const T& expected, const T& scale) {

@@ -1,6 +1,8 @@
 /// The generators of generators.hpp, compiled once.
 #include "mechcheck/harness/generators.hpp"
 
+#include <algorithm>
+
 namespace mechcheck::generators {
 
 rc::Gen<double> dyadic(double lo, double hi) {
@@ -214,7 +216,8 @@ rc::Gen<std::vector<double>> coordinates(int n) {
 
 void showValue(const model_case& c, std::ostream& os) {
   static const char* names[] = {"spring pendulum", "spherical pendulum", "rotating pivot",
-                                "particles"};
+                                "particles", "relativistic coupled particles",
+                                "quartic coupled particles"};
   os << names[c.which] << " params (";
   for (double p : c.params) os << p << " ";
   os << ") q (";
@@ -222,7 +225,7 @@ void showValue(const model_case& c, std::ostream& os) {
   os << ") qdot (";
   for (double x : c.qdot) os << x << " ";
   os << ") t " << c.t;
-  if (c.which == 3) {
+  if (c.which >= 3) {
     os << " ";
     showValue(c.pair, os);
     os << " ";
@@ -230,10 +233,29 @@ void showValue(const model_case& c, std::ostream& os) {
   }
 }
 
+namespace {
+/// The particles of a model case with which >= 3.
+void draw_particles(model_case& c) {
+  c.pair = *pair_potentials();
+  c.particles = *particle_samples(2, 3);
+  c.q = c.particles.q;
+  c.qdot = c.particles.qdot;
+  if (c.which >= 4) {
+    // beta, kappa: |kappa| <= min mass / 4 with pairs at least 1 apart keeps the kinetic
+    // matrix positive definite for up to 3 particles.
+    const double m = *std::min_element(c.particles.masses.begin(), c.particles.masses.end());
+    c.params = {c.which == 5 ? *dyadic(0, 1) : 0.0, *dyadic(-0.25, 0.25) * m};
+    if (c.which == 4)  // relativistic: every component below 0.45, |v| < 0.78
+      for (auto& v : c.qdot) v = *dyadic_towards_zero(0.45);
+    c.particles.qdot = c.qdot;
+  }
+}
+}  // namespace
+
 rc::Gen<model_case> model_cases() {
   return rc::gen::exec([] {
     model_case c;
-    c.which = *rc::gen::inRange(0, 4);
+    c.which = *rc::gen::inRange(0, 6);
     switch (c.which) {
       case 0:  // m, k, l, g; x in [-1/2, 1/2] with l >= 1
         c.params = {*positive(), *positive(), *dyadic(1, 3), *positive()};
@@ -253,11 +275,17 @@ rc::Gen<model_case> model_cases() {
         c.t = *coordinate();
         break;
       default:
-        c.pair = *pair_potentials();
-        c.particles = *particle_samples(2, 3);
-        c.q = c.particles.q;
-        c.qdot = c.particles.qdot;
+        draw_particles(c);
     }
+    return c;
+  });
+}
+
+rc::Gen<model_case> closed_particle_cases() {
+  return rc::gen::exec([] {
+    model_case c;
+    c.which = *rc::gen::inRange(3, 6);
+    draw_particles(c);
     return c;
   });
 }

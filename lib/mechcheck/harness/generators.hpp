@@ -275,7 +275,8 @@ rc::Gen<particle_sample> particle_samples(int min_particles = 2, int max_particl
 
 /// A model system chosen at random, with a state where its kinetic matrix is regular.
 struct model_case {
-  int which = 0;                  // 0 spring pendulum, 1 spherical, 2 rotating pivot, 3 N-body
+  int which = 0;  // 0 spring pendulum, 1 spherical, 2 rotating pivot, 3 N-body, 4 and 5 N-body
+                  // relativistic / quartic with velocity coupling (params beta, kappa)
   std::vector<double> params, q, qdot;
   double t = 0;
   pair_potential pair;
@@ -285,8 +286,13 @@ struct model_case {
 void showValue(const model_case& c, std::ostream& os);
 
 /// A model system with its parameters and a state: spring, spherical and rotating-pivot
-/// pendulums and N particles with a random pair potential.
+/// pendulums, N particles with a random pair potential, and N particles whose L is not
+/// quadratic in the velocities (relativistic or quartic, with Darwin-like coupling).
 rc::Gen<model_case> model_cases();
+
+/// The closed N-particle cases of model_cases (which = 3, 4, 5): invariant under
+/// translations, rotations and time translation; Galilean boosts only for which = 3.
+rc::Gen<model_case> closed_particle_cases();
 
 /// A direction: three dyadic components in [-2, 2], not all zero.
 rc::Gen<std::vector<double>> directions();

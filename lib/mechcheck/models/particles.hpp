@@ -2,7 +2,8 @@
 /// N point masses in three dimensions with pair potentials and an optional external
 /// field: q = (r_1, ..., r_N) stacked (length 3N),
 ///   L = sum_i m_i |rdot_i|^2 / 2 - sum_{i<j} U(|r_i - r_j|) - sum_i V(z_i)
-/// (notes lectures 6-8: translations, rotations, time translation, broken symmetry).
+/// (notes lectures 6-8: translations, rotations, time translation, broken symmetry), and
+/// velocity_coupled_system, whose L is not quadratic in the velocities.
 
 #include <cmath>
 #include <string>
@@ -166,6 +167,97 @@ struct particle_system {
     const S t = kinetic(qdot);
     const S v = potential(q);
     return t - v;
+  }
+};
+
+/// The kinetic term of one particle in a velocity_coupled_system.
+enum class kinetic_form {
+  relativistic,  ///< -m sqrt(1 - |v|^2), units with c = 1; defined for |v| < 1
+  quartic        ///< m |v|^2 / 2 + beta m |v|^4 / 4, beta >= 0
+};
+
+/// N particles whose Lagrangian is not quadratic in the velocities (the Legendre transform
+/// of notes eqs 244-257 is for any L): each particle's kinetic term is relativistic or
+/// quartic (kinetic_form), and each pair is coupled through its velocities as in Darwin's
+/// Lagrangian besides its potential U(r),
+///   L = sum_a K(m_a, v_a) + sum_{a<b} [kappa / (2 r) (v_a.v_b + (v_a.n)(v_b.n)) - U(r)],
+/// r = |r_a - r_b|, n = (r_a - r_b) / r. Closed: invariant under translations, rotations
+/// and time translation; not under Galilean boosts. The kinetic matrix d2L/dqdot2 is
+/// positive definite while |kappa| / r_min stays below the smallest mass over N - 1.
+/// Evaluating a relativistic particle at |v| >= 1 throws domain_error.
+template <class P, class Pair>
+struct velocity_coupled_system {
+  std::vector<P> masses;
+  Pair pair;
+  kinetic_form form;
+  P beta, kappa;
+
+  velocity_coupled_system(std::vector<P> m, Pair u, kinetic_form f, P beta_, P kappa_)
+      : masses(std::move(m)), pair(std::move(u)), form(f), beta(std::move(beta_)),
+        kappa(std::move(kappa_)) {
+    for (std::size_t i = 0; i < masses.size(); ++i)
+      require_positive(masses[i], "velocity_coupled_system", ("mass " + std::to_string(i)).c_str());
+    require_non_negative(beta, "velocity_coupled_system", "beta");
+    require_finite_value(kappa, "velocity_coupled_system", "kappa");
+  }
+
+  Eigen::Index particles() const { return static_cast<Eigen::Index>(masses.size()); }
+  Eigen::Index dof() const { return 3 * particles(); }
+
+  template <class S>
+  S operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& qdot, const S&) const {
+    using std::sqrt;
+    if (q.size() != dof() || qdot.size() != dof())
+      throw dimension_error("velocity_coupled_system: " + std::to_string(particles()) +
+                            " particles need 3N = " + std::to_string(dof()) +
+                            " coordinates and velocities, got " + std::to_string(q.size()) +
+                            " and " + std::to_string(qdot.size()));
+    S l = lift<S>(0);
+    for (Eigen::Index a = 0; a < particles(); ++a) {
+      S v2 = lift<S>(0);
+      for (int c = 0; c < 3; ++c) {
+        const S vc = qdot(3 * a + c) * qdot(3 * a + c);
+        v2 += vc;
+      }
+      const S m = lift<S>(masses[a]);
+      if (form == kinetic_form::relativistic) {
+        if (!(innermost_value(v2) < 1))
+          throw domain_error("velocity_coupled_system: relativistic particle " +
+                             std::to_string(a) + " has |v|^2 = " + to_text(v2) +
+                             ", not below c^2 = 1");
+        const S root = sqrt(S(lift<S>(1) - v2));
+        const S k = m * root;
+        l -= k;
+      } else {
+        const S quadratic = m * v2 * half<S>();
+        const S quartic = lift<S>(beta) * m * v2 * v2 / lift<S>(4);
+        l += quadratic;
+        l += quartic;
+      }
+      for (Eigen::Index b = a + 1; b < particles(); ++b) {
+        S d2 = lift<S>(0), vv = lift<S>(0), vad = lift<S>(0), vbd = lift<S>(0);
+        for (int c = 0; c < 3; ++c) {
+          const S dc = q(3 * a + c) - q(3 * b + c);
+          const S dc2 = dc * dc;
+          d2 += dc2;
+          const S vab = qdot(3 * a + c) * qdot(3 * b + c);
+          vv += vab;
+          const S vac = qdot(3 * a + c) * dc;
+          vad += vac;
+          const S vbc = qdot(3 * b + c) * dc;
+          vbd += vbc;
+        }
+        const S r = sqrt(d2);
+        const S along = vad * vbd / d2;
+        const S bracket = vv + along;
+        const S two_r = lift<S>(2) * r;
+        const S coupling = lift<S>(kappa) * bracket / two_r;
+        const S u = pair(r);
+        l += coupling;
+        l -= u;
+      }
+    }
+    return l;
   }
 };
 
