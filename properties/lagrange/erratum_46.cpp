@@ -35,18 +35,10 @@ struct erratum_46 {
   }
   template <class T>
   static void property() {
-    const double m = *gen::positive(), l = *gen::positive(), g = *gen::positive(),
-                 r = *gen::positive(), w = *gen::coefficient();
-    dynamic_vector<T> q(1), v(1);
-    q << T(*gen::coordinate());
-    v << T(*gen::coordinate());
-    const T t = T(*gen::coordinate());
-    using std::cos;
-    using std::sin;
-    const T a = mc::accelerations(printed_eq46{m, l, g, r, w}, q, v, t)(0);
-    const T expected = -(T(g) / T(l)) * sin(q(0)) + T(r) * T(w) * T(w) / T(l) * cos(q(0) + T(w) * t);
-    check_close("printed L's thetaddot vs eq 47", a, expected,
-                at_least_one(T(T(g) / T(l) + T(r) * T(w) * T(w) / T(l))), 32);
+    check_against_eq47<T>("printed L's thetaddot vs eq 47",
+                          [](double m, double l, double g, double r, double w) {
+                            return printed_eq46{m, l, g, r, w};
+                          });
   }
 };
 MECHCHECK_LAW(erratum_46);

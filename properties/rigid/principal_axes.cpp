@@ -7,8 +7,9 @@ struct principal_axes_diagonalise {
   static law_info info() {
     return {"rigid.principal_axes",
             "Principal axes diagonalise the tensor (O I O^T = diag), O is a rotation, and "
-            "M = I Omega is parallel to Omega exactly when Omega lies on a principal axis",
-            {"142", "145", "146"}};
+            "M = I Omega is parallel to Omega exactly when Omega lies on a principal axis; "
+            "in principal axes the cloud's M_i = sum m (r x (Omega x r))_i is I_i Omega_i",
+            {"142", "145", "146", "216", "217", "218"}};
   }
   // Eigen's symmetric eigensolver: residual ~16 eps |I|; products of 3x3 matrices add
   // 3 roundings per entry: k = 64 on |I|.
@@ -28,6 +29,23 @@ struct principal_axes_diagonalise {
       const vector3<T> m = inertia * omega;
       check_zero("|M x Omega| on a principal axis", T(m.cross(omega).norm()), scale, 64);
     }
+    // Eqs 216-218: the cloud's angular momentum, summed over its points, has principal
+    // components I_i Omega_i (sums over N points of 4-factor products, k = 8N + 64).
+    const vector3<T> omega = gen::draw_vector3<T>();
+    const vector3<T> c = mc::centre_of_mass(cloud);
+    vector3<T> m_cloud = vector3<T>::Zero();
+    T m_scale = lift<T>(1);
+    for (std::size_t a = 0; a < cloud.masses.size(); ++a) {
+      const vector3<T> r = cloud.positions[a] - c;
+      m_cloud += cloud.masses[a] * r.cross(vector3<T>(omega.cross(r)));
+      m_scale += cloud.masses[a] * r.squaredNorm() * omega.norm();
+    }
+    const vector3<T> m_principal = frame.axes.transpose() * m_cloud;
+    const vector3<T> omega_principal = frame.axes.transpose() * omega;
+    for (int i = 0; i < 3; ++i)
+      check_close("M_" + std::to_string(i + 1) + " vs I_i Omega_i", m_principal(i),
+                  T(frame.moments(i) * omega_principal(i)), m_scale,
+                  8.0 * cloud.masses.size() + 64);
     // Off the axes of an asymmetric top M is not parallel to Omega.
     if (mc::classify(inertia, 1e6) == mc::top_kind::asymmetric) {
       const vector3<T> omega = frame.axes.col(0) + frame.axes.col(2);
