@@ -161,6 +161,33 @@ TYPED_TEST(gauss_tableau, two_stage_matches_closed_form) {
   EXPECT_TRUE(near_eps(t.a[1][0], T(T(1) / 4 + r), 8));
 }
 
+// McLachlan's SB3A, derived in the tier: consistent, symmetric, the two third-order
+// conditions to rounding, and (in double, correctly rounded) the decimals McLachlan published
+// (a1 = 0.40518861839525227722, a2 = -0.28714404081652408900, also in Boost.Odeint).
+TYPED_TEST(gauss_tableau, mclachlan_sb3a_coefficients_satisfy_the_order_conditions) {
+  using T = TypeParam;
+  const auto k = mclachlan_sb3a_coefficients<T>();
+  ASSERT_EQ(k.a.size(), 6u);
+  T sum_a = 0, sum_b = 0, c = 0, d = 0, kick = 0, drift = 0;
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_EQ(k.a[i], k.a[5 - i]);
+    drift += k.a[i] * d * d;
+    c += k.a[i];
+    kick += k.b[i] * c * c;
+    d += k.b[i];
+    sum_a += k.a[i];
+    sum_b += k.b[i];
+  }
+  EXPECT_TRUE(near_eps(sum_a, T(1), 8));
+  EXPECT_TRUE(near_eps(sum_b, T(1), 8));
+  EXPECT_TRUE(near_eps(kick, T(T(1) / 3), 16));
+  EXPECT_TRUE(near_eps(drift, T(T(1) / 3), 16));
+  if constexpr (std::is_same_v<T, double>) {
+    EXPECT_TRUE(near_eps(k.a[0], 0.40518861839525227722, 1));
+    EXPECT_TRUE(near_eps(k.a[1], -0.28714404081652408900, 1));
+  }
+}
+
 TYPED_TEST(gauss_tableau, every_tableau_is_symplectic_and_consistent) {
   using T = TypeParam;
   for (int s = 1; s <= 4; ++s) {

@@ -45,6 +45,7 @@ struct symplectic_energy_error {
     };
     check.template operator()<mc::stormer_verlet>("Stormer-Verlet", 2, 128);
     check.template operator()<yoshida4>("composition 4", 4, 64);
+    check.template operator()<mc::mclachlan4>("McLachlan SB3A", 4, 64);
     check.template operator()<gauss2>("Gauss-Legendre 2", 4, 32);
   }
 };

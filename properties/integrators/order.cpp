@@ -30,7 +30,7 @@ struct integrator_orders {
   static law_info info() {
     return {"integrators.order",
             "Every integrator converges with its order p: 1 (Euler), 2 (Verlet), 4/6/8 "
-            "(compositions), 4 (RK4), 2s (Gauss-Legendre s = 1..4)",
+            "(compositions), 4 (RK4, McLachlan's SB3A), 2s (Gauss-Legendre s = 1..4)",
             {"250", "258", "260", "261", "262"}};
   }
   // Truncation model e(h) = C h^p (1 + O(h)) for the pendulum over t in [0, 1]; the
@@ -54,6 +54,7 @@ struct integrator_orders {
     check.template operator()<yoshida4>("composition 4", 4, 16);
     check.template operator()<yoshida6>("composition 6", 6, 8);
     check.template operator()<yoshida8>("composition 8", 8, 8);
+    check.template operator()<mc::mclachlan4>("McLachlan SB3A", 4, 16);
     check.template operator()<gauss1>("Gauss-Legendre 1", 2, 32);
     check.template operator()<gauss2>("Gauss-Legendre 2", 4, 8);
     check.template operator()<gauss3>("Gauss-Legendre 3", 6, 4);

@@ -11,7 +11,7 @@ struct symplectic_integrators {
             {"285", "292", "300", "301", "302"}};
   }
   // Rounding in a map made of m force evaluations on n dof: k = 16 m n, with m = 1
-  // (Euler), 1 (Verlet), 3, 9, 27 (compositions), 2 s (Gauss-Legendre: converged
+  // (Euler), 1 (Verlet), 3, 9, 27 (compositions), 5 (SB3A), 2 s (Gauss-Legendre: converged
   // stages, each stage one evaluation and an s-term sum).
   template <class T>
   static void property() {
@@ -31,6 +31,7 @@ struct symplectic_integrators {
     check.template operator()<yoshida4>("composition 4", 3);
     check.template operator()<yoshida6>("composition 6", 9);
     check.template operator()<yoshida8>("composition 8", 27);
+    check.template operator()<mc::mclachlan4>("McLachlan SB3A", 5);
     check.template operator()<gauss1>("Gauss-Legendre 1", 2);
     check.template operator()<gauss2>("Gauss-Legendre 2", 4);
     check.template operator()<gauss3>("Gauss-Legendre 3", 6);

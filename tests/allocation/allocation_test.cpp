@@ -52,6 +52,8 @@ void expect_no_allocation(const System& sys, const phase_state<Vec>& x0, double 
       << "composition<4>";
   EXPECT_EQ((allocations_per_100_steps(composition<System, Vec, 6>(sys), x0, h)), 0)
       << "composition<6>";
+  EXPECT_EQ((allocations_per_100_steps(mclachlan4<System, Vec>(sys), x0, h)), 0)
+      << "mclachlan4";
   EXPECT_EQ((allocations_per_100_steps(gauss_legendre<System, Vec, 2>(sys), x0, h)), 0)
       << "gauss_legendre<2>";
   EXPECT_EQ((allocations_per_100_steps(gauss_legendre<System, Vec, 4>(sys), x0, h)), 0)

@@ -36,6 +36,7 @@ std::vector<stepper_under_audit<T>> builtin_steppers() {
       method<detail::composition4, T>("mechcheck::composition4"),
       method<detail::composition6, T>("mechcheck::composition6"),
       method<detail::composition8, T>("mechcheck::composition8"),
+      method<mclachlan4, T>("mechcheck::mclachlan4"),
       method<detail::gauss_legendre1, T>("mechcheck::gauss_legendre1"),
       method<detail::gauss_legendre2, T>("mechcheck::gauss_legendre2"),
       method<detail::gauss_legendre3, T>("mechcheck::gauss_legendre3"),
