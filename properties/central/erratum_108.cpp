@@ -11,7 +11,8 @@ struct printed_radial_108 {
   S operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& qdot, const S&) const {
     const S r = q(0);
     const S kinetic = lift<S>(m) * qdot(0) * qdot(0) * mc::half<S>();
-    const S centrifugal = lift<S>(big_m * big_m / (2 * m)) * mc::inverse(S(r * r));
+    const S m2 = lift<S>(big_m) * lift<S>(big_m), two_m = lift<S>(2) * lift<S>(m);
+    const S centrifugal = m2 * mc::inverse(two_m) * mc::inverse(S(r * r));
     const S potential = u(r);
     return kinetic + centrifugal - potential;
   }
