@@ -284,7 +284,13 @@ std::string to_markdown(const std::vector<stepper_audit>& audits, const report_o
 
 std::string svg_loglog(const std::string& title, const std::string& x_label,
                        const std::string& y_label, const std::vector<plot_series>& series) {
-  const double W = 720, H = 480, left = 80, right = 230, top = 40, bottom = 60;
+  // The legend sits right of the plot: wide enough for the longest name (~6.6 px a
+  // character at 12 px sans-serif, after a 26 px sample line).
+  std::size_t longest = 0;
+  for (const auto& s : series) longest = std::max(longest, s.name.size());
+  const double left = 80, top = 40, bottom = 60, H = 480;
+  const double right = std::max(230.0, 40 + 6.6 * static_cast<double>(longest));
+  const double W = left + 410 + right;
   double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
   for (const auto& s : series)
     for (const auto& [x, y] : s.points)
