@@ -134,7 +134,7 @@ typename A::Scalar cross_component(const A& a, const B& b, int i) {
 
 /// The value of x with every AD layer stripped.
 template <class T>
-real_type_t<T> innermost_value(const T& x) {
+const real_type_t<T>& innermost_value(const T& x) {
   if constexpr (is_ad_v<T>) {
     return innermost_value(x.value());
   } else {

@@ -24,11 +24,13 @@
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <variant>
 #include <vector>
 
 #include <boost/math/special_functions/legendre.hpp>
 
 #include "mechcheck/core.hpp"
+#include "mechcheck/core/inplace.hpp"
 #include "mechcheck/integrators/systems.hpp"
 
 namespace mechcheck {
@@ -65,13 +67,48 @@ void require_finite_state(const phase_state<Vec>& x, const char* where) {
                            "] = " + to_text(x.p(i)));
 }
 
-/// Checks the step h: finite and non-zero (a negative h steps backwards in time).
+/// Throws for a step h that is not finite or is zero (a negative h steps backwards).
 template <class S>
-void require_step(const S& h, const char* where) {
+[[gnu::cold, gnu::noinline]] void refuse_step(const S& h, const char* where) {
   if (!is_finite(h))
     throw non_finite_error(std::string(where) + ": step h must be finite, got " + to_text(h));
-  if (h == 0)
-    throw domain_error(std::string(where) + ": step h must be non-zero, got " + to_text(h));
+  throw domain_error(std::string(where) + ": step h must be non-zero, got " + to_text(h));
+}
+
+/// Checks the step h: finite and non-zero.
+template <class S>
+void require_step(const S& h, const char* where) {
+  if (!is_finite(h) || h == 0) [[unlikely]]
+    refuse_step(h, where);
+}
+
+/// True when every entry of a built-in floating vector is finite: 0 * x is 0 for finite
+/// x and NaN otherwise, so one comparison of the sum answers for the whole vector.
+template <class Vec>
+bool all_finite_floating(const Vec& v) {
+  typename Vec::Scalar zero_unless_bad = 0;
+  for (Eigen::Index i = 0; i < v.size(); ++i) zero_unless_bad += 0 * v(i);
+  return zero_unless_bad == 0;
+}
+
+/// The state a step produced is not finite (or, for built-in types, the start was not):
+/// names the bad start, or restores x and names the step and its first non-finite entry.
+template <class System, class Vec>
+[[gnu::cold, gnu::noinline]] void refuse_result(phase_state<Vec>& x, const phase_state<Vec>& start,
+                                                const typename Vec::Scalar& h, const char* where) {
+  const phase_state<Vec> produced = x;
+  x = start;
+  require_finite_state<is_canonical<System>()>(x, where);  // a bad start is named as such
+  const auto bad_q = first_non_finite(produced.q), bad_p = first_non_finite(produced.p);
+  if (bad_q < 0 && bad_p < 0) {
+    x = produced;  // a false alarm (cannot happen for a correct check): keep the step
+    return;
+  }
+  const std::string what =
+      bad_q >= 0 ? "q[" + std::to_string(bad_q) + "] = " + to_text(produced.q(bad_q))
+                 : "p[" + std::to_string(bad_p) + "] = " + to_text(produced.p(bad_p));
+  throw non_finite_error(std::string(where) + ": the step of h = " + to_text(h) + " from q = " +
+                         to_text(start.q) + ", p = " + to_text(start.p) + " produced " + what);
 }
 
 /// One guarded step: checks the state and h, runs body(x), and checks that the state it
@@ -79,44 +116,38 @@ void require_step(const S& h, const char* where) {
 /// non_finite_error from that step, naming h and the state it started from, and leaves
 /// x exactly as it was; so does any error thrown inside the step.
 ///
-/// For tier scalars the state is checked once, after the step: a non-finite start gives a
-/// non-finite result, and only then is the start examined (so that the error names the
-/// bad input, as the check before the step would have).
+/// For built-in types the state is checked once, after the step: a non-finite start gives
+/// a non-finite result, and only then is the start examined (so that the error names the
+/// bad input, as the check before the step would have). The failure paths are out of
+/// line, so that the check costs a few instructions in the step.
+///
+/// `start` is where the step keeps the state it began from (the stepper's scratch).
 template <class System, class Vec, class Body>
 void guarded_step(phase_state<Vec>& x, const typename Vec::Scalar& h, const char* where,
-                  Body&& body) {
-  constexpr bool tier = std::is_floating_point_v<typename Vec::Scalar>;
-  if constexpr (tier) {
+                  phase_state<Vec>& start, Body&& body) {
+  constexpr bool floating = std::is_floating_point_v<typename Vec::Scalar>;
+  if constexpr (floating) {
     if (is_canonical<System>() && x.q.size() != x.p.size()) [[unlikely]]
       require_finite_state<true>(x, where);  // names the mismatch
   } else {
     require_finite_state<is_canonical<System>()>(x, where);
   }
   require_step(h, where);
-  const phase_state<Vec> start = x;
+  start = x;
   try {
     body(x);
   } catch (...) {
     x = start;  // an error inside the step (a system refusing a state) leaves no half step
-    if constexpr (tier) require_finite_state<is_canonical<System>()>(x, where);
+    if constexpr (floating) require_finite_state<is_canonical<System>()>(x, where);
     throw;
   }
-  if constexpr (tier) {
-    if (x.q.allFinite() && x.p.allFinite()) [[likely]]
-      return;
-    const phase_state<Vec> produced = x;
-    x = start;
-    require_finite_state<is_canonical<System>()>(x, where);  // a bad start is named as such
-    x = produced;
-  }
-  const auto bad_q = first_non_finite(x.q), bad_p = first_non_finite(x.p);
-  if (bad_q < 0 && bad_p < 0) [[likely]]
-    return;
-  const std::string what = bad_q >= 0 ? "q[" + std::to_string(bad_q) + "] = " + to_text(x.q(bad_q))
-                                      : "p[" + std::to_string(bad_p) + "] = " + to_text(x.p(bad_p));
-  x = start;
-  throw non_finite_error(std::string(where) + ": the step of h = " + to_text(h) + " from q = " +
-                         to_text(start.q) + ", p = " + to_text(start.p) + " produced " + what);
+  bool finite;
+  if constexpr (floating)
+    finite = all_finite_floating(x.q) && all_finite_floating(x.p);
+  else
+    finite = first_non_finite(x.q) < 0 && first_non_finite(x.p) < 0;
+  if (!finite) [[unlikely]]
+    refuse_result<System>(x, start, h, where);
 }
 
 /// Largest |new - old| and |new| over the components, innermost values (for the
@@ -132,19 +163,67 @@ void track_change(const Vec& next, const Vec& last, Real& change, Real& size) {
   }
 }
 
-/// y += a * v: an Eigen expression for tier scalars (vectorised), element by element for
-/// AD scalars (each product stored before it is added).
+/// y += a * v: an Eigen expression for built-in types (vectorised), in place through the
+/// scratch t for multiprecision numbers, element by element for AD scalars (each product
+/// stored before it is added).
 template <class Vec, class S>
-void axpy(Vec& y, const S& a, const Vec& v) {
-  if constexpr (!is_ad_v<S>) {
+void axpy(Vec& y, const S& a, const Vec& v, S& t) {
+  if constexpr (std::is_floating_point_v<S>) {
     y.noalias() += a * v;
+  } else if constexpr (inplace::is_number_v<S>) {
+    for (Eigen::Index i = 0; i < y.size(); ++i) inplace::add_product(y(i), a, v(i), t);
   } else {
     for (Eigen::Index i = 0; i < y.size(); ++i) {
-      const S t = a * v(i);
+      t = a * v(i);
       y(i) += t;
     }
   }
 }
+
+/// y += a * v with a scratch of its own.
+template <class Vec, class S>
+void axpy(Vec& y, const S& a, const Vec& v) {
+  S t = a;
+  axpy(y, a, v, t);
+}
+
+/// r = c h for a constant c of the tier: in place for tier scalars, c lifted for AD
+/// scalars (whose constants take the derivative width of the current differentiation).
+template <class S>
+void scale(S& r, const real_type_t<S>& c, const S& h) {
+  if constexpr (std::is_same_v<S, real_type_t<S>>)
+    inplace::multiply(r, c, h);
+  else
+    r = lift<S>(c) * h;
+}
+
+/// Gives the workspace vector v the size of `like`, reusing its storage when the size
+/// already matches (the first step of a stepper on a dynamic state sizes it).
+template <class Vec>
+void shape_like(Vec& v, const Vec& like) {
+  if (v.size() != like.size()) v = like;
+}
+
+/// A step's temporaries W. Kept in the stepper for multiprecision and AD scalars, so that
+/// each step reuses them (for mpfr50 every new number is an MPFR allocation); made fresh
+/// on the stack for built-in types, where the compiler keeps them in registers (kept in
+/// the object they go through memory: a Verlet step in double measured 1.5x slower).
+template <class W, class Scalar>
+class scratch {
+ public:
+  template <class F>
+  void use(F&& f) {
+    if constexpr (std::is_floating_point_v<Scalar>) {
+      W local;
+      f(local);
+    } else {
+      f(kept_);
+    }
+  }
+
+ private:
+  [[no_unique_address]] std::conditional_t<std::is_floating_point_v<Scalar>, std::monostate, W> kept_;
+};
 
 /// Remembers the force at the last position, for methods whose last kick and next first
 /// kick use the same position (first same as last). Off for AD scalars, where equal
@@ -175,20 +254,37 @@ class force_cache {
 }  // namespace detail
 
 /// Explicit Euler: q' = q + h dH/dp(q, p), p' = p - h dH/dq(q, p). Order 1, not symplectic.
+///
+/// Like every stepper here it keeps the temporaries of a step (detail::scratch): a step on
+/// a fixed-size or already-sized state allocates nothing, in any tier, and one stepper
+/// object serves one thread at a time.
 template <class System, class Vec>
 struct explicit_euler {
   static constexpr int order = 1;
   static constexpr bool symplectic = false;
   static constexpr bool symmetric = false;
+  using scalar = typename Vec::Scalar;
   System system;
-  void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) const {
-    detail::guarded_step<System>(x, h, "explicit_euler", [&](phase_state<Vec>& y) {
-      Vec dq = y.q, dp = y.p;
-      system.vector_field(y.q, y.p, dq, dp);
-      detail::axpy(y.q, h, dq);
-      detail::axpy(y.p, h, dp);
+  explicit_euler(System s) : system(std::move(s)) {}  // implicit: Method{system} builds it
+  void operator()(phase_state<Vec>& x, const scalar& h) const {
+    scratch_.use([&](workspace& w) {
+      detail::guarded_step<System>(x, h, "explicit_euler", w.start, [&](phase_state<Vec>& y) {
+        detail::shape_like(w.dq, y.q);
+        detail::shape_like(w.dp, y.p);
+        system.vector_field(y.q, y.p, w.dq, w.dp);
+        detail::axpy(y.q, h, w.dq, w.t);
+        detail::axpy(y.p, h, w.dp, w.t);
+      });
     });
   }
+
+ private:
+  struct workspace {
+    phase_state<Vec> start;
+    Vec dq, dp;
+    scalar t;
+  };
+  mutable detail::scratch<workspace, scalar> scratch_;
 };
 
 /// Classical fourth-order Runge-Kutta on (q, p). Order 4, not symplectic.
@@ -197,47 +293,62 @@ struct rk4 {
   static constexpr int order = 4;
   static constexpr bool symplectic = false;
   static constexpr bool symmetric = false;
+  using scalar = typename Vec::Scalar;
+  using real = real_type_t<scalar>;
   System system;
-  void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) const {
-    detail::guarded_step<System>(x, h, "rk4", [&](phase_state<Vec>& y) { step(y, h); });
+  rk4(System s) : system(std::move(s)) {}  // implicit: Method{system} builds it
+  void operator()(phase_state<Vec>& x, const scalar& h) const {
+    scratch_.use([&](workspace& w) {
+      detail::guarded_step<System>(x, h, "rk4", w.start, [&](phase_state<Vec>& y) { step(y, h, w); });
+    });
   }
 
  private:
-  void step(phase_state<Vec>& x, const typename Vec::Scalar& h) const {
-    using S = typename Vec::Scalar;
-    const S half_h = h * half<S>();
-    const S sixth_h = h * lift<S>(real_type_t<S>(1) / 6);
-    Vec k1q = x.q, k1p = x.p, k2q = x.q, k2p = x.p, k3q = x.q, k3p = x.p, k4q = x.q, k4p = x.p;
-    system.vector_field(x.q, x.p, k1q, k1p);
-    Vec yq = x.q, yp = x.p;
-    detail::axpy(yq, half_h, k1q);
-    detail::axpy(yp, half_h, k1p);
-    system.vector_field(yq, yp, k2q, k2p);
-    yq = x.q;
-    yp = x.p;
-    detail::axpy(yq, half_h, k2q);
-    detail::axpy(yp, half_h, k2p);
-    system.vector_field(yq, yp, k3q, k3p);
-    yq = x.q;
-    yp = x.p;
-    detail::axpy(yq, h, k3q);
-    detail::axpy(yp, h, k3p);
-    system.vector_field(yq, yp, k4q, k4p);
-    combine(x.q, k1q, k2q, k3q, k4q, sixth_h);
-    combine(x.p, k1p, k2p, k3p, k4p, sixth_h);
+  struct workspace {
+    phase_state<Vec> start;
+    Vec k1q, k1p, k2q, k2p, k3q, k3p, k4q, k4p, yq, yp;
+    scalar half_h, sixth_h, t, u;
+    real half = real(1) / 2, sixth = real(1) / 6;
+  };
+  mutable detail::scratch<workspace, scalar> scratch_;
+
+  void step(phase_state<Vec>& x, const scalar& h, workspace& w) const {
+    for (Vec* k : {&w.k1q, &w.k2q, &w.k3q, &w.k4q, &w.yq}) detail::shape_like(*k, x.q);
+    for (Vec* k : {&w.k1p, &w.k2p, &w.k3p, &w.k4p, &w.yp}) detail::shape_like(*k, x.p);
+    detail::scale(w.half_h, w.half, h);
+    detail::scale(w.sixth_h, w.sixth, h);
+    system.vector_field(x.q, x.p, w.k1q, w.k1p);
+    stage(x, w.half_h, w.k1q, w.k1p, w.k2q, w.k2p, w);
+    stage(x, w.half_h, w.k2q, w.k2p, w.k3q, w.k3p, w);
+    stage(x, h, w.k3q, w.k3p, w.k4q, w.k4p, w);
+    combine(x.q, w.k1q, w.k2q, w.k3q, w.k4q, w);
+    combine(x.p, w.k1p, w.k2p, w.k3p, w.k4p, w);
   }
 
-  /// y += h/6 (k1 + 2 k2 + 2 k3 + k4), per block (q and p may differ in length).
+  /// (kq, kp) = f(x + a (dq, dp)).
+  void stage(const phase_state<Vec>& x, const scalar& a, const Vec& dq, const Vec& dp, Vec& kq,
+             Vec& kp, workspace& w) const {
+    w.yq = x.q;
+    w.yp = x.p;
+    detail::axpy(w.yq, a, dq, w.t);
+    detail::axpy(w.yp, a, dp, w.t);
+    system.vector_field(w.yq, w.yp, kq, kp);
+  }
+
+  /// y += h/6 ((k1 + k4) + 2 (k2 + k3)), per block (q and p may differ in length).
   static void combine(Vec& y, const Vec& k1, const Vec& k2, const Vec& k3, const Vec& k4,
-                      const typename Vec::Scalar& sixth_h) {
-    using S = typename Vec::Scalar;
-    const S two = lift<S>(2);
+                      workspace& w) {
+    scalar& a = w.t;
+    scalar& b = w.u;
     for (Eigen::Index i = 0; i < y.size(); ++i) {
-      const S a = k2(i) + k3(i);
-      const S b = k1(i) + k4(i);
-      const S sum = b + two * a;
-      const S d = sixth_h * sum;
-      y(i) += d;
+      a = k2(i);
+      a += k3(i);
+      a += a;  // 2 (k2 + k3), exact
+      b = k1(i);
+      b += k4(i);
+      b += a;
+      inplace::multiply(b, w.sixth_h, b);
+      y(i) += b;
     }
   }
 };
@@ -248,16 +359,29 @@ struct symplectic_euler {
   static constexpr int order = 1;
   static constexpr bool symplectic = true;
   static constexpr bool symmetric = false;
+  using scalar = typename Vec::Scalar;
   System system;
-  void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) const {
-    detail::guarded_step<System>(x, h, "symplectic_euler", [&](phase_state<Vec>& y) {
-      Vec f = y.q, v = y.p;
-      system.force(y.q, f);
-      detail::axpy(y.p, h, f);
-      system.velocity(y.p, v);
-      detail::axpy(y.q, h, v);
+  symplectic_euler(System s) : system(std::move(s)) {}  // implicit: Method{system} builds it
+  void operator()(phase_state<Vec>& x, const scalar& h) const {
+    scratch_.use([&](workspace& w) {
+      detail::guarded_step<System>(x, h, "symplectic_euler", w.start, [&](phase_state<Vec>& y) {
+        detail::shape_like(w.f, y.q);
+        detail::shape_like(w.v, y.p);
+        system.force(y.q, w.f);
+        detail::axpy(y.p, h, w.f, w.t);
+        system.velocity(y.p, w.v);
+        detail::axpy(y.q, h, w.v, w.t);
+      });
     });
   }
+
+ private:
+  struct workspace {
+    phase_state<Vec> start;
+    Vec f, v;
+    scalar t;
+  };
+  mutable detail::scratch<workspace, scalar> scratch_;
 };
 
 /// Stormer-Verlet (kick-drift-kick, velocity Verlet): order 2, symplectic, time
@@ -268,23 +392,36 @@ class stormer_verlet {
   static constexpr int order = 2;
   static constexpr bool symplectic = true;
   static constexpr bool symmetric = true;
+  using scalar = typename Vec::Scalar;
+  using real = real_type_t<scalar>;
   explicit stormer_verlet(System system) : system_(std::move(system)) {}
 
-  void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) {
-    detail::guarded_step<System>(x, h, "stormer_verlet", [&](phase_state<Vec>& y) { substep(y, h); });
+  void operator()(phase_state<Vec>& x, const scalar& h) {
+    scratch_.use([&](workspace& w) {
+      detail::guarded_step<System>(x, h, "stormer_verlet", w.start,
+                                   [&](phase_state<Vec>& y) { substep(y, h, w); });
+    });
   }
 
+  /// The step's temporaries (compositions of Verlet steps share one).
+  struct workspace {
+    phase_state<Vec> start;
+    Vec f, v;
+    scalar half_h, t;
+    real half = real(1) / 2;
+  };
+
   /// One Verlet step without the finiteness check (used by compositions).
-  void substep(phase_state<Vec>& x, const typename Vec::Scalar& h) {
-    using S = typename Vec::Scalar;
-    const S half_h = h * half<S>();
-    Vec f = x.q, v = x.p;
-    cache_.force(system_, x.q, f);
-    detail::axpy(x.p, half_h, f);
-    system_.velocity(x.p, v);
-    detail::axpy(x.q, h, v);
-    cache_.force(system_, x.q, f);
-    detail::axpy(x.p, half_h, f);
+  void substep(phase_state<Vec>& x, const scalar& h, workspace& w) {
+    detail::shape_like(w.f, x.q);
+    detail::shape_like(w.v, x.p);
+    detail::scale(w.half_h, w.half, h);
+    cache_.force(system_, x.q, w.f);
+    detail::axpy(x.p, w.half_h, w.f, w.t);
+    system_.velocity(x.p, w.v);
+    detail::axpy(x.q, h, w.v, w.t);
+    cache_.force(system_, x.q, w.f);
+    detail::axpy(x.p, w.half_h, w.f, w.t);
   }
 
   const System& system() const { return system_; }
@@ -292,6 +429,7 @@ class stormer_verlet {
  private:
   System system_;
   detail::force_cache<Vec> cache_;
+  detail::scratch<workspace, scalar> scratch_;
 };
 
 /// Triple-jump weights (Yoshida 1990; Suzuki 1990) of a symmetric composition of
@@ -330,19 +468,27 @@ class composition {
       : verlet_(std::move(system)), weights_(triple_jump_weights<real_type_t<scalar>>(Order)) {}
 
   void operator()(phase_state<Vec>& x, const scalar& h) {
-    detail::guarded_step<System>(x, h, "composition", [&](phase_state<Vec>& y) {
-      for (const auto& w : weights_) {
-        const scalar hw = lift<scalar>(w) * h;
-        verlet_.substep(y, hw);
-      }
+    scratch_.use([&](workspace& w) {
+      detail::guarded_step<System>(x, h, "composition", w.start, [&](phase_state<Vec>& y) {
+        for (const auto& weight : weights_) {
+          detail::scale(w.hw, weight, h);
+          verlet_.substep(y, w.hw, w.verlet);
+        }
+      });
     });
   }
 
   const std::vector<real_type_t<scalar>>& weights() const { return weights_; }
 
  private:
+  struct workspace {
+    phase_state<Vec> start;
+    typename stormer_verlet<System, Vec>::workspace verlet;
+    scalar hw;
+  };
   stormer_verlet<System, Vec> verlet_;
   std::vector<real_type_t<scalar>> weights_;
+  detail::scratch<workspace, scalar> scratch_;
 };
 
 /// Coefficients of a drift-kick splitting: for i = 1..s, q += a_i h v(p), then
@@ -426,15 +572,20 @@ class splitting {
       : system_(std::move(system)), coefficients_(std::move(coefficients)), name_(name) {}
 
   void operator()(phase_state<Vec>& x, const scalar& h) {
-    detail::guarded_step<System>(x, h, name_, [&](phase_state<Vec>& y) {
-      Vec f = y.q, v = y.p;
-      for (std::size_t i = 0; i < coefficients_.a.size(); ++i) {
-        system_.velocity(y.p, v);
-        detail::axpy(y.q, scalar(lift<scalar>(coefficients_.a[i]) * h), v);
-        if (coefficients_.b[i] == 0) continue;
-        system_.force(y.q, f);
-        detail::axpy(y.p, scalar(lift<scalar>(coefficients_.b[i]) * h), f);
-      }
+    scratch_.use([&](workspace& w) {
+      detail::guarded_step<System>(x, h, name_, w.start, [&](phase_state<Vec>& y) {
+        detail::shape_like(w.f, y.q);
+        detail::shape_like(w.v, y.p);
+        for (std::size_t i = 0; i < coefficients_.a.size(); ++i) {
+          system_.velocity(y.p, w.v);
+          detail::scale(w.ch, coefficients_.a[i], h);
+          detail::axpy(y.q, w.ch, w.v, w.t);
+          if (coefficients_.b[i] == 0) continue;
+          system_.force(y.q, w.f);
+          detail::scale(w.ch, coefficients_.b[i], h);
+          detail::axpy(y.p, w.ch, w.f, w.t);
+        }
+      });
     });
   }
 
@@ -444,6 +595,12 @@ class splitting {
   System system_;
   splitting_coefficients<real> coefficients_;
   const char* name_;
+  struct workspace {
+    phase_state<Vec> start;
+    Vec f, v;
+    scalar ch, t;
+  };
+  detail::scratch<workspace, scalar> scratch_;
 };
 
 /// McLachlan's SB3A (see mclachlan_sb3a_coefficients): order 4, symplectic, symmetric,
@@ -544,7 +701,9 @@ class gauss_legendre {
   explicit gauss_legendre(System system) : system_(std::move(system)), tableau_(Stages) {}
 
   void operator()(phase_state<Vec>& x, const scalar& h) {
-    detail::guarded_step<System>(x, h, "gauss_legendre", [&](phase_state<Vec>& y) { step(y, h); });
+    scratch_.use([&](phase_state<Vec>& start) {
+      detail::guarded_step<System>(x, h, "gauss_legendre", start, [&](phase_state<Vec>& y) { step(y, h); });
+    });
   }
 
   const gauss_legendre_tableau<real>& tableau() const { return tableau_; }
@@ -651,6 +810,7 @@ class gauss_legendre {
 
   System system_;
   gauss_legendre_tableau<real> tableau_;
+  detail::scratch<phase_state<Vec>, scalar> scratch_;
   Vec comp_q_, comp_p_, last_q_, last_p_;
   std::array<Vec, Stages> last_kq_, last_kp_;
   scalar last_h_{};

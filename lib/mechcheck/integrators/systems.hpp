@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "mechcheck/core.hpp"
+#include "mechcheck/core/inplace.hpp"
 #include "mechcheck/models/particles.hpp"
 #include "mechcheck/poisson/bracket.hpp"
 
@@ -22,6 +23,29 @@ template <class Vec>
 struct phase_state {
   Vec q, p;
 };
+
+namespace detail {
+/// Multiprecision numbers of a system's own tier T are computed into kept numbers
+/// (mechcheck/core/inplace.hpp), so that an evaluation allocates nothing.
+template <class S, class T>
+constexpr bool in_place = inplace::is_number_v<S> && std::is_same_v<S, T>;
+
+/// dq = p (1/m), the velocity of a kinetic energy |p|^2 / (2m).
+template <class T, class Vec>
+void velocity_of_mass(const T& mass, const Vec& p, Vec& dq) {
+  using S = typename Vec::Scalar;
+  using R = real_type_t<S>;  // derived constants in the evaluation tier
+  if constexpr (in_place<S, T>) {
+    thread_local S inv_m;
+    inv_m = 1;
+    inv_m /= mass;
+    for (Eigen::Index i = 0; i < p.size(); ++i) inplace::multiply(dq(i), p(i), inv_m);
+  } else {
+    const S inv_m = lift<S>(R(1) / R(mass));
+    for (Eigen::Index i = 0; i < p.size(); ++i) dq(i) = p(i) * inv_m;
+  }
+}
+}  // namespace detail
 
 /// Kepler problem H = |p|^2 / (2m) - k / |q| in any dimension (k > 0: attraction).
 template <class T>
@@ -33,16 +57,22 @@ struct kepler_system {
   }
   template <class Vec>
   void velocity(const Vec& p, Vec& dq) const {
-    using S = typename Vec::Scalar;
-    using R = real_type_t<S>;  // derived constants in the evaluation tier
-    const S inv_m = lift<S>(R(1) / R(mass));
-    for (Eigen::Index i = 0; i < p.size(); ++i) dq(i) = p(i) * inv_m;
+    detail::velocity_of_mass(mass, p, dq);
   }
   template <class Vec>
   void force(const Vec& q, Vec& dp) const {
     using S = typename Vec::Scalar;
     using std::sqrt;
-    if constexpr (!is_ad_v<S>) {
+    if constexpr (detail::in_place<S, T>) {  // the operations below, into kept numbers
+      thread_local S r2, c;
+      r2 = 0;
+      for (Eigen::Index i = 0; i < q.size(); ++i) inplace::add_product(r2, q(i), q(i), c);
+      inplace::sqrt(c, r2);
+      c *= r2;                     // r^3
+      inplace::divide(c, k, c);    // k / r^3
+      inplace::negate(c);
+      for (Eigen::Index i = 0; i < q.size(); ++i) inplace::multiply(dp(i), c, q(i));
+    } else if constexpr (!is_ad_v<S>) {
       const S r2 = q.squaredNorm();
       dp.noalias() = (-S(k) / (r2 * sqrt(r2))) * q;
     } else {
@@ -93,16 +123,20 @@ struct harmonic_oscillator_system {
   }
   template <class Vec>
   void velocity(const Vec& p, Vec& dq) const {
-    using S = typename Vec::Scalar;
-    using R = real_type_t<S>;
-    const S inv_m = lift<S>(R(1) / R(mass));
-    for (Eigen::Index i = 0; i < p.size(); ++i) dq(i) = p(i) * inv_m;
+    detail::velocity_of_mass(mass, p, dq);
   }
   template <class Vec>
   void force(const Vec& q, Vec& dp) const {
     using S = typename Vec::Scalar;
-    const S minus_k = lift<S>(real_type_t<S>(-stiffness));
-    for (Eigen::Index i = 0; i < q.size(); ++i) dp(i) = q(i) * minus_k;
+    if constexpr (detail::in_place<S, T>) {
+      thread_local S minus_k;
+      minus_k = stiffness;
+      inplace::negate(minus_k);
+      for (Eigen::Index i = 0; i < q.size(); ++i) inplace::multiply(dp(i), q(i), minus_k);
+    } else {
+      const S minus_k = lift<S>(real_type_t<S>(-stiffness));
+      for (Eigen::Index i = 0; i < q.size(); ++i) dp(i) = q(i) * minus_k;
+    }
   }
   template <class Vec>
   void vector_field(const Vec& q, const Vec& p, Vec& dq, Vec& dp) const {
