@@ -5,6 +5,9 @@
 ///   mechcheck mclachlan4      vs odeint symplectic_rkn_sb3a_mclachlan (order 4, the
 ///                                same SB3A method: five force evaluations a step)
 ///   mechcheck rk4             vs odeint runge_kutta4                  (order 4)
+/// double/floor/kepler_force_chain is the latency of one Kepler force evaluation in a
+/// dependent chain: the least time a step with one force evaluation can take in double.
+/// mpfr50/mechcheck/gauss_legendre4 counts the stage sweeps and evaluations a step.
 /// Run: build/bench/mechcheck_bench_integrators --benchmark_min_time=1
 /// Each benchmark reports steps per second; read ratios within one run.
 ///
@@ -180,6 +183,51 @@ BENCHMARK(odeint_mclachlan<mpfr50>)->Name("mpfr50/odeint/symplectic_rkn_sb3a_mcl
 BENCHMARK(mechcheck_mclachlan4<mpfr50>)->Name("mpfr50/mechcheck/mclachlan4");
 BENCHMARK(odeint_runge_kutta4<mpfr50>)->Name("mpfr50/odeint/runge_kutta4");
 BENCHMARK(mechcheck_rk4<mpfr50>)->Name("mpfr50/mechcheck/rk4");
+
+// --- the floor in double ------------------------------------------------------------------
+
+/// q <- q + c F(q) with the Kepler force of kepler_system: the latency of one force
+/// evaluation (one square root and one division in a dependent chain) plus one multiply
+/// and one add. No method with one force evaluation a step can take a step in less.
+void double_force_chain(benchmark::State& state) {
+  const kepler<double> sys(1.0, 1.0);
+  vec2<double> q(1, 0), f;
+  const double c = 1e-12;
+  for (auto _ : state) {
+    for (int s = 0; s < steps_per_iteration; ++s) {
+      sys.force(q, f);
+      q += c * f;
+    }
+    benchmark::DoNotOptimize(q);
+  }
+  count_steps(state);
+}
+BENCHMARK(double_force_chain)->Name("double/floor/kepler_force_chain");
+
+// --- Gauss-Legendre in mpfr50 ----------------------------------------------------------------
+
+/// Gauss-Legendre (s = 4) in mpfr50 on the same orbit, h = 2 pi / 500: steps per second,
+/// stage sweeps and vector-field evaluations per step (the Newton iteration's Jacobians
+/// included).
+void gauss_legendre4_mpfr50(benchmark::State& state) {
+  using V = vec2<mpfr50>;
+  const kepler<mpfr50> sys(mpfr50(1), mpfr50(1));
+  const mpfr50 h = 2 * boost::math::constants::pi<mpfr50>() / 500;
+  mechcheck::gauss_legendre<kepler<mpfr50>, V, 4> gl(sys);
+  mechcheck::phase_state<V> x{V(mpfr50(1), mpfr50(0)), V(mpfr50(0), mpfr50(11) / 10)};
+  gl(x, h);  // the first step starts cold
+  const long long sweeps0 = gl.sweeps(), evaluations0 = gl.evaluations();
+  long long steps = 0;
+  for (auto _ : state) {
+    gl(x, h);
+    ++steps;
+  }
+  state.counters["steps"] = benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kIsRate);
+  state.counters["stage_sweeps_per_step"] = static_cast<double>(gl.sweeps() - sweeps0) / steps;
+  state.counters["evaluations_per_step"] =
+      static_cast<double>(gl.evaluations() - evaluations0) / steps;
+}
+BENCHMARK(gauss_legendre4_mpfr50)->Name("mpfr50/mechcheck/gauss_legendre4");
 
 // --- Brouwer's law -------------------------------------------------------------------------
 

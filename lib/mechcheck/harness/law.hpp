@@ -52,10 +52,14 @@ std::vector<registered_law>& registry();
 law_result run_property(const law_info& info, std::string_view tier, int digits,
                         const run_config& config, void (*property)());
 
-/// Run one law in tier T with the given seed and number of cases.
+/// Run one law in tier T with the given seed and number of cases. A law whose cases are
+/// long runs caps them with `static constexpr int max_cases = n;`.
 template <class Law, class T>
 law_result run_law(const run_config& config) {
-  return run_property(Law::info(), tier_traits<T>::name, tier_digits<T>(), config,
+  run_config capped = config;
+  if constexpr (requires { Law::max_cases; })
+    capped.cases = capped.cases < Law::max_cases ? capped.cases : Law::max_cases;
+  return run_property(Law::info(), tier_traits<T>::name, tier_digits<T>(), capped,
                       &Law::template property<T>);
 }
 
