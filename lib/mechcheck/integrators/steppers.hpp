@@ -160,9 +160,9 @@ void track_change(const Vec& next, const Vec& last, Real& change, Real& size, Re
     const Real& n = innermost_value(next(m));
     if constexpr (std::is_floating_point_v<Real>) {  // branch-free: signs are random
       using std::abs;
-      d = abs(n - innermost_value(last(m)));
-      change = change > d ? change : d;
-      size = size > abs(n) ? size : abs(n);
+      const Real dm = abs(n - innermost_value(last(m))), a = abs(n);
+      change = change > dm ? change : dm;
+      size = size > a ? size : a;
     } else {  // in place
       d = n;
       d -= innermost_value(last(m));
