@@ -132,7 +132,8 @@ class growth_recorder {
 /// walk (independent rounding errors: Brouwer's law) it grows as L^(1/2), for a drift as
 /// L, and it stays flat for bounded noise. Increments ignore a constant offset (the error
 /// of a first step), and averaging over every start n makes the estimate steady from a
-/// single run: the exponent of 2^17 values varies by ~0.02 between runs.
+/// single run: over lags 4..1024 of 2^17 values the exponent varied with standard deviation
+/// 0.008 between 40 Kepler orbits (0.013 over lags 4..4096).
 struct increment_growth {
   std::vector<double> rms;  ///< rms[k]: lag 2^(first + k)
   int first = 0;
