@@ -3,8 +3,6 @@
 namespace {
 using namespace mechcheck::laws::central;
 
-int levi_civita(int i, int j, int k) { return (i - j) * (j - k) * (k - i) / 2; }
-
 struct so4_algebra {
   static law_info info() {
     return {"central.so4_algebra",
@@ -32,7 +30,7 @@ struct so4_algebra {
       for (int j = 0; j < 3; ++j) {
         T am = lift<T>(0), aa = lift<T>(0);
         for (int k = 0; k < 3; ++k)
-          if (const int e = levi_civita(i, j, k); e != 0) {
+          if (const int e = mc::levi_civita(i, j, k); e != 0) {
             am += e * a(k);
             aa += e * (-2 * c.mu * h) * m(k);
           }

@@ -3,12 +3,6 @@
 namespace {
 using namespace mechcheck::laws::poisson;
 
-/// Levi-Civita symbol on 0-based indices.
-int levi_civita(int i, int j, int k) {
-  if (i == j || j == k || k == i) return 0;
-  return ((j - i + 3) % 3 == 1) ? 1 : -1;
-}
-
 struct angular_momentum_algebra {
   static law_info info() {
     return {"poisson.angular_momentum_algebra", "{M_i,M_j} = eps_ijk M_k",
@@ -24,7 +18,7 @@ struct angular_momentum_algebra {
       for (int j = 0; j < 3; ++j) {
         T expected = lift<T>(0);
         for (int k = 0; k < 3; ++k)
-          if (const int e = levi_civita(i, j, k); e != 0)
+          if (const int e = mc::levi_civita(i, j, k); e != 0)
             expected += lift<T>(e) * mc::angular_momentum{k}(x.q(), x.p());
         check_close("{M_" + std::to_string(i + 1) + ",M_" + std::to_string(j + 1) + "}",
                     poisson_bracket(mc::angular_momentum{i}, mc::angular_momentum{j}, x),

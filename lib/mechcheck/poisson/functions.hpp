@@ -41,6 +41,13 @@ struct p_component {
   }
 };
 
+/// The Levi-Civita symbol eps_ijk on 0-based indices: +1 for even permutations of
+/// (0, 1, 2), -1 for odd ones, 0 when two indices agree (notes lecture 22, eq. 281).
+constexpr int levi_civita(int i, int j, int k) { return (i - j) * (j - k) * (k - i) / 2; }
+static_assert(levi_civita(0, 1, 2) == 1 && levi_civita(1, 2, 0) == 1 &&
+              levi_civita(1, 0, 2) == -1 && levi_civita(2, 1, 0) == -1 &&
+              levi_civita(0, 0, 1) == 0 && levi_civita(2, 1, 2) == 0);
+
 /// Component M_i of the angular momentum M = r x p, M_i = eps_ijk r_j p_k
 /// (notes lecture 22, eq. 281); index i in {0, 1, 2} for M_1, M_2, M_3. Needs n = 3.
 struct angular_momentum {
