@@ -1,4 +1,4 @@
-# mechcheck_add_laws(<target> SOURCES <law files...> [BASE_DIR <dir>] [GROUPING law|family]
+# mechcheck_add_laws(<target> SOURCES <law files...> [BASE_DIR <dir>] [GROUPING law|family|tier]
 #                    [TIERS <double float128 mpfr50>])
 #
 # Adds law files to a property executable, compiled once per precision tier: each tier's
@@ -9,12 +9,18 @@
 #   GROUPING family  one translation unit per directory (family) and tier: the laws of a
 #                    family share their instantiations, so a clean build is faster
 #                    (law files of one family must not reuse a name at file scope).
+#   GROUPING tier    one translation unit per tier for all the laws: they share every
+#                    instantiation, so the clean build does least work (the release
+#                    preset; law files must not reuse a name at file scope at all).
 #   TIERS            the tiers to compile (default all three; a law registers only in the
 #                    tiers compiled).
 function(mechcheck_add_laws target)
   cmake_parse_arguments(ARG "" "BASE_DIR;GROUPING" "SOURCES;TIERS" ${ARGN})
   if(NOT ARG_GROUPING)
     set(ARG_GROUPING law)
+  endif()
+  if(NOT ARG_GROUPING MATCHES "^(law|family|tier)$")
+    message(FATAL_ERROR "mechcheck_add_laws: unknown GROUPING '${ARG_GROUPING}' (law, family, tier)")
   endif()
   if(NOT ARG_BASE_DIR)
     set(ARG_BASE_DIR ${CMAKE_CURRENT_SOURCE_DIR})
@@ -37,7 +43,9 @@ function(mechcheck_add_laws target)
   foreach(src IN LISTS ARG_SOURCES)
     get_filename_component(abs ${src} ABSOLUTE)
     file(RELATIVE_PATH rel ${ARG_BASE_DIR} ${abs})
-    if(ARG_GROUPING STREQUAL "family")
+    if(ARG_GROUPING STREQUAL "tier")
+      set(group "laws")
+    elseif(ARG_GROUPING STREQUAL "family")
       get_filename_component(group ${rel} DIRECTORY)
       if(group STREQUAL "")
         set(group "top")

@@ -11,7 +11,9 @@
 #include "mechcheck/audit/report.hpp"
 #include "mechcheck/integrators/steppers.hpp"
 
-namespace {
+// A named namespace, not an anonymous one: the audit stores these types in closures of
+// its (external) templates, and in the unity build GCC warns about anonymous types there.
+namespace audit_test {
 using namespace mechcheck;
 namespace audit = mechcheck::audit;
 using outcome = audit::verdict::outcome;
@@ -206,4 +208,4 @@ TEST(Audit, ReportIsDeterministicWithoutTiming) {
   EXPECT_NE(audit::to_json({a}).find("\"claims_hold\": true"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace audit_test

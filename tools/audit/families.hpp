@@ -1,6 +1,6 @@
 #pragma once
-// The stepper families of mechcheck-audit, one translation unit per family and tier
-// (so that the command's build runs in parallel and a change to one family rebuilds one).
+// The stepper families of mechcheck-audit (the library's and Odeint's), one translation
+// unit per tier (tier_double.cpp, tier_mpfr50.cpp: the two tiers build in parallel).
 
 #include <string>
 #include <vector>
