@@ -507,4 +507,21 @@ stepper_audit audit_stepper(const stepper_under_audit<T>& s, const audit_options
   return audit_stepper(s, reference_problems<T>(), opt);
 }
 
+// In double and mpfr50, the tiers mechcheck-audit runs, the audit and the reference
+// problems are compiled once, in the audit library (audit_double.cpp, audit_mpfr50.cpp): a
+// program auditing its stepper compiles the stepper only (about 8 s less a tier). Other
+// tiers instantiate them where they are used.
+extern template std::vector<problem<double>> reference_problems<double>();
+extern template stepper_audit audit_stepper<double>(const stepper_under_audit<double>&,
+                                                    const std::vector<problem<double>>&,
+                                                    const audit_options&);
+extern template stepper_audit audit_stepper<double>(const stepper_under_audit<double>&,
+                                                    const audit_options&);
+extern template std::vector<problem<mpfr50>> reference_problems<mpfr50>();
+extern template stepper_audit audit_stepper<mpfr50>(const stepper_under_audit<mpfr50>&,
+                                                    const std::vector<problem<mpfr50>>&,
+                                                    const audit_options&);
+extern template stepper_audit audit_stepper<mpfr50>(const stepper_under_audit<mpfr50>&,
+                                                    const audit_options&);
+
 }  // namespace mechcheck::audit
