@@ -1,3 +1,5 @@
+#include <numbers>
+
 #include "integrators/integrators.hpp"
 
 namespace {
@@ -60,9 +62,10 @@ struct brouwer_gauss_legendre {
     // energy error (order 8) far below rounding. Not a whole number of steps a period: a
     // commensurate step brings the state back to the same points every period, and their
     // rounding errors with it (on a circular orbit with exactly 2048 the exponent read
-    // 0.42).
-    const double steps_per_period = 2048 + *gen::dyadic(0, 64) + 0.6180339887498949;
-    const double h = 2 * M_PI * a * std::sqrt(a) / steps_per_period;
+    // 0.42); the fractional part is the golden fraction, the offset farthest from any
+    // short period.
+    const double steps_per_period = 2048 + *gen::dyadic(0, 64) + (std::numbers::phi - 1);
+    const double h = 2 * std::numbers::pi * a * std::sqrt(a) / steps_per_period;
     const long steps = 1L << 17;
     std::vector<double> e;
     e.reserve(steps + 1);
