@@ -118,6 +118,21 @@ TEST(dynamics_errors, steps_must_be_finite_and_non_zero) {
   EXPECT_EQ(message_of([&] { method(x, std::numeric_limits<double>::quiet_NaN()); }),
             "rk4: step h must be finite, got nan");
   EXPECT_EQ(x.q, V(1, 0));
+  // In double h is checked after the step (the check costs nothing on the step's path):
+  // an implicit method iterating on a bad h, a cached force, still name h.
+  gauss_legendre<kepler_system<double>, V, 2> gl(kepler);
+  EXPECT_EQ(message_of([&] { gl(x, 0.0); }), "gauss_legendre: step h must be non-zero, got 0");
+  EXPECT_EQ(message_of([&] { gl(x, std::numeric_limits<double>::quiet_NaN()); }),
+            "gauss_legendre: step h must be finite, got nan");
+  stormer_verlet<kepler_system<double>, V> verlet(kepler);
+  verlet(x, 0.1);
+  const phase_state<V> before = x;
+  EXPECT_EQ(message_of([&] { verlet(x, -std::numeric_limits<double>::infinity()); }),
+            "stormer_verlet: step h must be finite, got -inf");
+  EXPECT_EQ(message_of([&] { verlet(x, 0.0); }), "stormer_verlet: step h must be non-zero, got 0");
+  EXPECT_EQ(x.q, before.q);
+  EXPECT_EQ(x.p, before.p);
+  x = {V(1, 0), V(0, 1)};
   method(x, -0.1);  // backwards in time is a step
   EXPECT_LT(x.q(1), 0);
 }

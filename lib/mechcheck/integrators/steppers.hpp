@@ -93,19 +93,18 @@ bool all_finite_floating(const Vec& v) {
   return zero_unless_bad == 0;
 }
 
-/// The state a step produced is not finite (or, for built-in types, the start was not):
-/// names the bad start, or restores x and names the step and its first non-finite entry.
+/// The state a step produced is not finite (or, for built-in types, h or the start was
+/// not): names the bad h, the bad start, or the step and its first non-finite entry. The
+/// caller has restored its state to `start`. Takes its arguments by value: a call that
+/// receives the address of the state or of h, even one never taken, makes the compiler
+/// keep them in memory through the step (a Verlet step in double was 1.13x slower).
 template <class System, class Vec>
-[[gnu::cold, gnu::noinline]] void refuse_result(phase_state<Vec>& x, const phase_state<Vec>& start,
-                                                const typename Vec::Scalar& h, const char* where) {
-  const phase_state<Vec> produced = x;
-  x = start;
-  require_finite_state<is_canonical<System>()>(x, where);  // a bad start is named as such
+[[gnu::cold, gnu::noinline, noreturn]] void refuse_result(phase_state<Vec> produced,
+                                                          phase_state<Vec> start,
+                                                          typename Vec::Scalar h, const char* where) {
+  require_step(h, where);
+  require_finite_state<is_canonical<System>()>(start, where);  // a bad start is named as such
   const auto bad_q = first_non_finite(produced.q), bad_p = first_non_finite(produced.p);
-  if (bad_q < 0 && bad_p < 0) {
-    x = produced;  // a false alarm (cannot happen for a correct check): keep the step
-    return;
-  }
   const std::string what =
       bad_q >= 0 ? "q[" + std::to_string(bad_q) + "] = " + to_text(produced.q(bad_q))
                  : "p[" + std::to_string(bad_p) + "] = " + to_text(produced.p(bad_p));
@@ -118,10 +117,11 @@ template <class System, class Vec>
 /// non_finite_error from that step, naming h and the state it started from, and leaves
 /// x exactly as it was; so does any error thrown inside the step.
 ///
-/// For built-in types the state is checked once, after the step: a non-finite start gives
-/// a non-finite result, and only then is the start examined (so that the error names the
-/// bad input, as the check before the step would have). The failure paths are out of
-/// line, so that the check costs a few instructions in the step.
+/// For built-in types the state and h are checked once, after the step: a non-finite
+/// start gives a non-finite result, and only then is the start examined (so that the
+/// error names the bad input, as the check before the step would have); a bad h is named
+/// before anything else. The failure path is out of line, so that the check costs a few
+/// instructions in the step.
 ///
 /// `start` is where the step keeps the state it began from (the stepper's scratch).
 template <class System, class Vec, class Body>
@@ -133,23 +133,29 @@ void guarded_step(phase_state<Vec>& x, const typename Vec::Scalar& h, const char
       require_finite_state<true>(x, where);  // names the mismatch
   } else {
     require_finite_state<is_canonical<System>()>(x, where);
+    require_step(h, where);
   }
-  require_step(h, where);
   start = x;
   try {
     body(x);
   } catch (...) {
     x = start;  // an error inside the step (a system refusing a state) leaves no half step
-    if constexpr (floating) require_finite_state<is_canonical<System>()>(x, where);
+    if constexpr (floating) {
+      require_step(h, where);
+      require_finite_state<is_canonical<System>()>(x, where);
+    }
     throw;
   }
-  bool finite;
+  bool good;
   if constexpr (floating)
-    finite = all_finite_floating(x.q) && all_finite_floating(x.p);
+    good = all_finite_floating(x.q) && all_finite_floating(x.p) && is_finite(h) && h != 0;
   else
-    finite = first_non_finite(x.q) < 0 && first_non_finite(x.p) < 0;
-  if (!finite) [[unlikely]]
-    refuse_result<System>(x, start, h, where);
+    good = first_non_finite(x.q) < 0 && first_non_finite(x.p) < 0;
+  if (!good) [[unlikely]] {
+    const phase_state<Vec> produced = x;
+    x = start;
+    refuse_result<System>(produced, start, h, where);
+  }
 }
 
 /// Largest |new - old| and |new| over the components, innermost values (for the
@@ -370,20 +376,29 @@ struct rk4 {
     system.vector_field(w.yq, w.yp, kq, kp);
   }
 
-  /// y += h/6 ((k1 + k4) + 2 (k2 + k3)), per block (q and p may differ in length).
+  /// y += h/6 ((k1 + k4) + 2 (k2 + k3)), per block (q and p may differ in length). For
+  /// built-in types y += h/6 (k1 + 2 (k2 + k3)) and then y += h/6 k4, in whole-vector
+  /// operations: the last stage enters through one multiply and one add, and y is stored
+  /// as it is loaded (per-entry stores of a state the next step loads as one packet
+  /// defeat store forwarding). Together 1.07x faster steps in double.
   static void combine(Vec& y, const Vec& k1, const Vec& k2, const Vec& k3, const Vec& k4,
                       workspace& w) {
-    scalar& a = w.t;
-    scalar& b = w.u;
-    for (Eigen::Index i = 0; i < y.size(); ++i) {
-      a = k2(i);
-      a += k3(i);
-      a += a;  // 2 (k2 + k3), exact
-      b = k1(i);
-      b += k4(i);
-      b += a;
-      inplace::multiply(b, w.sixth_h, b);
-      y(i) += b;
+    if constexpr (std::is_floating_point_v<scalar>) {
+      y.noalias() += w.sixth_h * ((k2 + k3) * 2 + k1);
+      y.noalias() += w.sixth_h * k4;
+    } else {
+      scalar& a = w.t;
+      scalar& b = w.u;
+      for (Eigen::Index i = 0; i < y.size(); ++i) {
+        a = k2(i);
+        a += k3(i);
+        a += a;  // 2 (k2 + k3), exact
+        b = k1(i);
+        b += k4(i);
+        b += a;
+        inplace::multiply(b, w.sixth_h, b);
+        y(i) += b;
+      }
     }
   }
 };
