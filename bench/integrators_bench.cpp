@@ -5,8 +5,12 @@
 ///   mechcheck mclachlan4      vs odeint symplectic_rkn_sb3a_mclachlan (order 4, the
 ///                                same SB3A method: five force evaluations a step)
 ///   mechcheck rk4             vs odeint runge_kutta4                  (order 4)
+/// <tier>/odeint/... evaluate the same velocity and force code as ours (the steppers
+/// compared); <tier>/odeint_own_rhs/... a right-hand side written for odeint.
 /// double/floor/kepler_force_chain is the latency of one Kepler force evaluation in a
 /// dependent chain: the least time a step with one force evaluation can take in double.
+/// double/by_hand/... are Verlet and RK4 written out on Eigen vectors with the same
+/// velocity and force, without checks: what a stepper of that method can approach.
 /// mpfr50/mechcheck/gauss_legendre4 counts the stage sweeps and evaluations a step.
 /// Run: build/bench/mechcheck_bench_integrators --benchmark_min_time=1
 /// Each benchmark reports steps per second; read ratios within one run.
@@ -37,46 +41,66 @@ T step_size() {
   return T(1) / T(100);
 }
 
-// --- Kepler right-hand sides in odeint's forms --------------------------------------------
+// --- Kepler right-hand sides in odeint's forms ------------------------------------------
+// Two versions. `shared_rhs` evaluates the code our steppers evaluate, kepler_system's
+// velocity and force (m = k = 1), on odeint's std::array states seen as Eigen vectors:
+// then the comparison is of the steppers alone. `own_rhs` is the right-hand side a user
+// of odeint writes for this problem (unit mass written in: no velocity to compute).
 
 template <class T>
-struct kepler_acceleration {  // velocity_verlet: a(q, v, t)
-  void operator()(const std::array<T, 2>& q, const std::array<T, 2>&, std::array<T, 2>& a,
-                  T) const {
-    using std::sqrt;
-    const T r2 = q[0] * q[0] + q[1] * q[1];
-    const T inv_r3 = T(1) / (r2 * sqrt(r2));
-    a[0] = -q[0] * inv_r3;
-    a[1] = -q[1] * inv_r3;
+using kepler = mechcheck::kepler_system<T>;
+template <class T>
+using vec2 = Eigen::Matrix<T, 2, 1>;
+template <class T>
+using A2 = std::array<T, 2>;
+template <class T>
+using A4 = std::array<T, 4>;
+
+template <class T>
+struct shared_rhs {
+  /// An Eigen view of an odeint state. The force and velocity take input and output as
+  /// one vector type, so an input is viewed through a mutable map too (and only read).
+  using map = Eigen::Map<vec2<T>>;
+  static map view(const T* data) { return map(const_cast<T*>(data)); }
+  static map view(T* data) { return map(data); }
+
+  kepler<T> sys{T(1), T(1)};
+  void acceleration(const A2<T>& q, A2<T>& a) const {  // F(q) / m = v(F(q))
+    map out = view(a.data());
+    sys.force(view(q.data()), out);
+    sys.velocity(out, out);
+  }
+  void coordinate_rate(const A2<T>& p, A2<T>& dq) const {
+    map out = view(dq.data());
+    sys.velocity(view(p.data()), out);
+  }
+  void momentum_rate(const A2<T>& q, A2<T>& dp) const {
+    map out = view(dp.data());
+    sys.force(view(q.data()), out);
+  }
+  void first_order(const A4<T>& x, A4<T>& dx) const {  // (q, p) -> (v(p), F(q))
+    map dq = view(dx.data()), dp = view(dx.data() + 2);
+    sys.velocity(view(x.data() + 2), dq);
+    sys.force(view(x.data()), dp);
   }
 };
 
 template <class T>
-struct kepler_coordinate_rate {  // symplectic RKN: dq/dt = p
-  void operator()(const std::array<T, 2>& p, std::array<T, 2>& dq) const { dq = p; }
-};
-
-template <class T>
-struct kepler_momentum_rate {  // symplectic RKN: dp/dt = -q / |q|^3
-  void operator()(const std::array<T, 2>& q, std::array<T, 2>& dp) const {
+struct own_rhs {
+  static void force(const T& x, const T& y, T& fx, T& fy) {  // -q / |q|^3
     using std::sqrt;
-    const T r2 = q[0] * q[0] + q[1] * q[1];
+    const T r2 = x * x + y * y;
     const T inv_r3 = T(1) / (r2 * sqrt(r2));
-    dp[0] = -q[0] * inv_r3;
-    dp[1] = -q[1] * inv_r3;
+    fx = -x * inv_r3;
+    fy = -y * inv_r3;
   }
-};
-
-template <class T>
-struct kepler_first_order {  // runge_kutta4: d(q, p)/dt
-  void operator()(const std::array<T, 4>& x, std::array<T, 4>& dx, T) const {
-    using std::sqrt;
-    const T r2 = x[0] * x[0] + x[1] * x[1];
-    const T inv_r3 = T(1) / (r2 * sqrt(r2));
+  void acceleration(const A2<T>& q, A2<T>& a) const { force(q[0], q[1], a[0], a[1]); }
+  void coordinate_rate(const A2<T>& p, A2<T>& dq) const { dq = p; }
+  void momentum_rate(const A2<T>& q, A2<T>& dp) const { force(q[0], q[1], dp[0], dp[1]); }
+  void first_order(const A4<T>& x, A4<T>& dx) const {
     dx[0] = x[2];
     dx[1] = x[3];
-    dx[2] = -x[0] * inv_r3;
-    dx[3] = -x[1] * inv_r3;
+    force(x[0], x[1], dx[2], dx[3]);
   }
 };
 
@@ -87,16 +111,19 @@ void count_steps(benchmark::State& state) {
 
 // --- odeint --------------------------------------------------------------------------------
 
-template <class T>
+template <class T, template <class> class Rhs>
 void odeint_velocity_verlet(benchmark::State& state) {
-  using A2 = std::array<T, 2>;
-  odeint::velocity_verlet<A2, A2, T, A2, T, T> stepper;
-  std::array<T, 2> q{T(1), T(0)}, v{T(0), T(11) / T(10)};
+  odeint::velocity_verlet<A2<T>, A2<T>, T, A2<T>, T, T> stepper;
+  const Rhs<T> rhs;
+  const auto acceleration = [&rhs](const A2<T>& q, const A2<T>&, A2<T>& a, T) {
+    rhs.acceleration(q, a);
+  };
+  A2<T> q{T(1), T(0)}, v{T(0), T(11) / T(10)};
   const T h = step_size<T>();
   T t = 0;
   for (auto _ : state) {
     for (int s = 0; s < steps_per_iteration; ++s) {
-      stepper.do_step(kepler_acceleration<T>{}, std::make_pair(std::ref(q), std::ref(v)), t, h);
+      stepper.do_step(acceleration, std::make_pair(std::ref(q), std::ref(v)), t, h);
       t += h;
     }
     benchmark::DoNotOptimize(q);
@@ -104,17 +131,19 @@ void odeint_velocity_verlet(benchmark::State& state) {
   count_steps(state);
 }
 
-template <class T>
+template <class T, template <class> class Rhs>
 void odeint_mclachlan(benchmark::State& state) {
-  using A2 = std::array<T, 2>;
-  odeint::symplectic_rkn_sb3a_mclachlan<A2, A2, T, A2, A2, T> stepper;
-  std::array<T, 2> q{T(1), T(0)}, p{T(0), T(11) / T(10)};
+  odeint::symplectic_rkn_sb3a_mclachlan<A2<T>, A2<T>, T, A2<T>, A2<T>, T> stepper;
+  const Rhs<T> rhs;
+  const auto rates = std::make_pair(
+      [&rhs](const A2<T>& p, A2<T>& dq) { rhs.coordinate_rate(p, dq); },
+      [&rhs](const A2<T>& q, A2<T>& dp) { rhs.momentum_rate(q, dp); });
+  A2<T> q{T(1), T(0)}, p{T(0), T(11) / T(10)};
   const T h = step_size<T>();
   T t = 0;
   for (auto _ : state) {
     for (int s = 0; s < steps_per_iteration; ++s) {
-      stepper.do_step(std::make_pair(kepler_coordinate_rate<T>{}, kepler_momentum_rate<T>{}),
-                      std::make_pair(std::ref(q), std::ref(p)), t, h);
+      stepper.do_step(rates, std::make_pair(std::ref(q), std::ref(p)), t, h);
       t += h;
     }
     benchmark::DoNotOptimize(q);
@@ -122,16 +151,17 @@ void odeint_mclachlan(benchmark::State& state) {
   count_steps(state);
 }
 
-template <class T>
+template <class T, template <class> class Rhs>
 void odeint_runge_kutta4(benchmark::State& state) {
-  using A4 = std::array<T, 4>;
-  odeint::runge_kutta4<A4, T, A4, T> stepper;
-  std::array<T, 4> x{T(1), T(0), T(0), T(11) / T(10)};
+  odeint::runge_kutta4<A4<T>, T, A4<T>, T> stepper;
+  const Rhs<T> rhs;
+  const auto field = [&rhs](const A4<T>& x, A4<T>& dx, T) { rhs.first_order(x, dx); };
+  A4<T> x{T(1), T(0), T(0), T(11) / T(10)};
   const T h = step_size<T>();
   T t = 0;
   for (auto _ : state) {
     for (int s = 0; s < steps_per_iteration; ++s) {
-      stepper.do_step(kepler_first_order<T>{}, x, t, h);
+      stepper.do_step(field, x, t, h);
       t += h;
     }
     benchmark::DoNotOptimize(x);
@@ -154,11 +184,6 @@ void run_mechcheck(benchmark::State& state, Stepper stepper) {
 }
 
 template <class T>
-using kepler = mechcheck::kepler_system<T>;
-template <class T>
-using vec2 = Eigen::Matrix<T, 2, 1>;
-
-template <class T>
 void mechcheck_stormer_verlet(benchmark::State& state) {
   run_mechcheck<T>(state, mechcheck::stormer_verlet<kepler<T>, vec2<T>>(kepler<T>(T(1), T(1))));
 }
@@ -171,17 +196,23 @@ void mechcheck_rk4(benchmark::State& state) {
   run_mechcheck<T>(state, mechcheck::rk4<kepler<T>, vec2<T>>{kepler<T>(T(1), T(1))});
 }
 
-BENCHMARK(odeint_velocity_verlet<double>)->Name("double/odeint/velocity_verlet");
+BENCHMARK(odeint_velocity_verlet<double, shared_rhs>)->Name("double/odeint/velocity_verlet");
+BENCHMARK(odeint_velocity_verlet<double, own_rhs>)->Name("double/odeint_own_rhs/velocity_verlet");
 BENCHMARK(mechcheck_stormer_verlet<double>)->Name("double/mechcheck/stormer_verlet");
-BENCHMARK(odeint_mclachlan<double>)->Name("double/odeint/symplectic_rkn_sb3a_mclachlan");
+BENCHMARK(odeint_mclachlan<double, shared_rhs>)->Name("double/odeint/symplectic_rkn_sb3a_mclachlan");
+BENCHMARK(odeint_mclachlan<double, own_rhs>)->Name("double/odeint_own_rhs/symplectic_rkn_sb3a_mclachlan");
 BENCHMARK(mechcheck_mclachlan4<double>)->Name("double/mechcheck/mclachlan4");
-BENCHMARK(odeint_runge_kutta4<double>)->Name("double/odeint/runge_kutta4");
+BENCHMARK(odeint_runge_kutta4<double, shared_rhs>)->Name("double/odeint/runge_kutta4");
+BENCHMARK(odeint_runge_kutta4<double, own_rhs>)->Name("double/odeint_own_rhs/runge_kutta4");
 BENCHMARK(mechcheck_rk4<double>)->Name("double/mechcheck/rk4");
-BENCHMARK(odeint_velocity_verlet<mpfr50>)->Name("mpfr50/odeint/velocity_verlet");
+BENCHMARK(odeint_velocity_verlet<mpfr50, shared_rhs>)->Name("mpfr50/odeint/velocity_verlet");
+BENCHMARK(odeint_velocity_verlet<mpfr50, own_rhs>)->Name("mpfr50/odeint_own_rhs/velocity_verlet");
 BENCHMARK(mechcheck_stormer_verlet<mpfr50>)->Name("mpfr50/mechcheck/stormer_verlet");
-BENCHMARK(odeint_mclachlan<mpfr50>)->Name("mpfr50/odeint/symplectic_rkn_sb3a_mclachlan");
+BENCHMARK(odeint_mclachlan<mpfr50, shared_rhs>)->Name("mpfr50/odeint/symplectic_rkn_sb3a_mclachlan");
+BENCHMARK(odeint_mclachlan<mpfr50, own_rhs>)->Name("mpfr50/odeint_own_rhs/symplectic_rkn_sb3a_mclachlan");
 BENCHMARK(mechcheck_mclachlan4<mpfr50>)->Name("mpfr50/mechcheck/mclachlan4");
-BENCHMARK(odeint_runge_kutta4<mpfr50>)->Name("mpfr50/odeint/runge_kutta4");
+BENCHMARK(odeint_runge_kutta4<mpfr50, shared_rhs>)->Name("mpfr50/odeint/runge_kutta4");
+BENCHMARK(odeint_runge_kutta4<mpfr50, own_rhs>)->Name("mpfr50/odeint_own_rhs/runge_kutta4");
 BENCHMARK(mechcheck_rk4<mpfr50>)->Name("mpfr50/mechcheck/rk4");
 
 // --- the floor in double ------------------------------------------------------------------
@@ -203,6 +234,57 @@ void double_force_chain(benchmark::State& state) {
   count_steps(state);
 }
 BENCHMARK(double_force_chain)->Name("double/floor/kepler_force_chain");
+
+/// Verlet and RK4 written out by hand on Eigen vectors in double, with the same velocity
+/// and force, no checks and no workspace: what a step of the method costs with this
+/// force when nothing else is done.
+void double_verlet_by_hand(benchmark::State& state) {
+  using V = vec2<double>;
+  const kepler<double> sys(1.0, 1.0);
+  V q(1, 0), p(0, 1.1), f, v;
+  const double h = step_size<double>(), half_h = h / 2;
+  sys.force(q, f);
+  for (auto _ : state) {
+    for (int s = 0; s < steps_per_iteration; ++s) {
+      p += half_h * f;
+      sys.velocity(p, v);
+      q += h * v;
+      sys.force(q, f);
+      p += half_h * f;
+    }
+    benchmark::DoNotOptimize(q);
+  }
+  count_steps(state);
+}
+BENCHMARK(double_verlet_by_hand)->Name("double/by_hand/stormer_verlet");
+
+void double_rk4_by_hand(benchmark::State& state) {
+  using V = vec2<double>;
+  const kepler<double> sys(1.0, 1.0);
+  V q(1, 0), p(0, 1.1), k1q, k1p, k2q, k2p, k3q, k3p, k4q, k4p, yq, yp;
+  const double h = step_size<double>(), half_h = h / 2, sixth_h = h / 6;
+  for (auto _ : state) {
+    for (int s = 0; s < steps_per_iteration; ++s) {
+      sys.vector_field(q, p, k1q, k1p);
+      yq = q + half_h * k1q;
+      yp = p + half_h * k1p;
+      sys.vector_field(yq, yp, k2q, k2p);
+      yq = q + half_h * k2q;
+      yp = p + half_h * k2p;
+      sys.vector_field(yq, yp, k3q, k3p);
+      yq = q + h * k3q;
+      yp = p + h * k3p;
+      sys.vector_field(yq, yp, k4q, k4p);
+      q += sixth_h * ((k2q + k3q) * 2 + k1q);
+      q += sixth_h * k4q;
+      p += sixth_h * ((k2p + k3p) * 2 + k1p);
+      p += sixth_h * k4p;
+    }
+    benchmark::DoNotOptimize(q);
+  }
+  count_steps(state);
+}
+BENCHMARK(double_rk4_by_hand)->Name("double/by_hand/rk4");
 
 // --- Gauss-Legendre in mpfr50 ----------------------------------------------------------------
 
