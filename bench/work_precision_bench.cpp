@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -322,6 +323,7 @@ int main(int argc, char** argv) {
     }
     args.push_back(argv[i]);
   }
+  std::filesystem::create_directories(out);  // before the runs, not after three minutes
   int n = static_cast<int>(args.size());
   benchmark::Initialize(&n, args.data());
   for (const method& m : methods())
