@@ -384,7 +384,7 @@ struct rk4 {
   static void combine(Vec& y, const Vec& k1, const Vec& k2, const Vec& k3, const Vec& k4,
                       workspace& w) {
     if constexpr (std::is_floating_point_v<scalar>) {
-      y.noalias() += w.sixth_h * ((k2 + k3) * 2 + k1);
+      y.noalias() += w.sixth_h * ((k2 + k3) * scalar(2) + k1);
       y.noalias() += w.sixth_h * k4;
     } else {
       scalar& a = w.t;
