@@ -12,8 +12,9 @@
 /// (wall time interpolated log-log between the two runs whose errors bracket each level:
 /// 1e-6 to 1e-12 in double, 1e-6 to 1e-30 in mpfr50, the levels below the finest run's
 /// error extrapolated along the fitted C N^-4, see seconds_at), and writes
-/// work-precision.json, work-precision.svg (double) and work-precision-mpfr50.svg (error
-/// against wall time) into the directory given by --out DIR (default: the current one).
+/// work-precision-kepler-e0.5.json, work-precision-kepler-e0.5.svg (double) and
+/// work-precision-kepler-e0.5-mpfr50.svg (error against wall time) into the directory
+/// given by --out DIR (default: the current one); --out docs/bench rewrites the README's.
 /// Run: build/bench/mechcheck_bench_work_precision --out build/report/bench
 /// (--benchmark_filter='^double/' or '^mpfr50/' runs one tier.)
 
@@ -57,6 +58,8 @@ template <class T>
 T eccentricity() {
   return T(1) / 2;
 }
+/// The output files are named after the problem (docs/bench keeps them under these names).
+constexpr const char* file_stem = "work-precision-kepler-e0.5";
 template <class T>
 state2<T> initial_q() {
   return {1 - eccentricity<T>(), T(0)};
@@ -391,12 +394,12 @@ int main(int argc, char** argv) {
     if (series.empty()) continue;
     const std::string suffix = tier == "double" ? "" : "-" + tier;
     mc::write_file_atomically(
-        out + "/work-precision" + suffix + ".svg",
+        out + "/" + file_stem + suffix + ".svg",
         mc::audit::svg_loglog("Kepler e = 0.5, ten periods (" + tier + ")", "wall time [s]",
                               "error |x_N - x_0|", series));
   }
   std::cout << table.str();
-  mc::write_file_atomically(out + "/work-precision.json", doc.dump(2) + "\n");
-  std::cout << "wrote " << out << "/work-precision.json and the plots\n";
+  mc::write_file_atomically(out + "/" + file_stem + ".json", doc.dump(2) + "\n");
+  std::cout << "wrote " << out << "/" << file_stem << ".json and the plots\n";
   return 0;
 }
