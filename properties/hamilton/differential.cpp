@@ -3,17 +3,6 @@
 namespace {
 using namespace mechcheck::laws::lagrange;
 
-/// The momenta p = dL/dqdot as a function of (q, qdot, t), for their total time derivative.
-template <class L>
-struct momenta_function {
-  const L& lag;
-  template <class S>
-  dynamic_vector<S> operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& qdot,
-                               const S& t) const {
-    return mc::generalized_momenta(lag, q, qdot, t);
-  }
-};
-
 struct hamilton_differential {
   static law_info info() {
     return {"hamilton.differential",
@@ -83,26 +72,15 @@ struct hamilton_differential {
     // Eqs 251-253: a particle in a radial potential V.
     const auto x = *gen::points_away_from_origin();
     const auto u = *gen::radial_potentials();
-    const T m = T(*gen::positive());
-    const auto particle = [&]<class S>(const dynamic_vector<S>& r, const dynamic_vector<S>& rdot,
-                                       const S&) -> S {
-      using std::sqrt;
-      S v2 = lift<S>(0), r2 = lift<S>(0);
-      for (Eigen::Index i = 0; i < r.size(); ++i) {
-        const S vi = rdot(i) * rdot(i), ri = r(i) * r(i);
-        v2 += vi;
-        r2 += ri;
-      }
-      const S kinetic = lift<S>(m) * v2 / lift<S>(2);
-      const S potential = u(S(sqrt(r2)));
-      return kinetic - potential;
-    };
+    const double m_double = *gen::positive();
+    const T m = T(m_double);
+    const radial_particle particle{m_double, u};
     const auto r = gen::to_tier<T>(x.q);
     const auto rdot = gen::to_tier<T>(x.p);
     const dynamic_vector<T> p = mc::generalized_momenta(particle, r, rdot, lift<T>(0));
     check_vectors("p = m rdot (eq 252)", p, dynamic_vector<T>(m * rdot),
                   at_least_one(T(m * inf_norm(rdot))), 4);
-    const mc::legendre_hamiltonian<decltype(particle)> hp{particle};
+    const mc::legendre_hamiltonian<radial_particle> hp{particle};
     using std::abs;
     const T l = particle(r, rdot, lift<T>(0));
     const T pv = p.dot(rdot);

@@ -108,6 +108,36 @@ std::pair<T, T> charge_rate(const L& lag, const G& generator, const F& f,
   return {rate, at_least_one(scale)};
 }
 
+/// The momenta p = dL/dqdot as a function of (q, qdot, t), for their total time derivative.
+template <class L>
+struct momenta_function {
+  const L& lag;
+  template <class S>
+  dynamic_vector<S> operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& qdot,
+                               const S& t) const {
+    return mc::generalized_momenta(lag, q, qdot, t);
+  }
+};
+
+/// A particle of mass m in the radial potential u: L = m |rdot|^2 / 2 - u(|r|) (eq 251).
+struct radial_particle {
+  double m;
+  gen::radial_potential u;
+  template <class S>
+  S operator()(const dynamic_vector<S>& r, const dynamic_vector<S>& rdot, const S&) const {
+    using std::sqrt;
+    S v2 = lift<S>(0), r2 = lift<S>(0);
+    for (Eigen::Index i = 0; i < r.size(); ++i) {
+      const S vi = rdot(i) * rdot(i), ri = r(i) * r(i);
+      v2 += vi;
+      r2 += ri;
+    }
+    const S kinetic = lift<S>(m) * v2 / lift<S>(2);
+    const S potential = u(S(sqrt(r2)));
+    return kinetic - potential;
+  }
+};
+
 /// Call body(lagrangian) with the case's model.
 template <class Body>
 void with_model(const model_case& c, Body&& body) {
@@ -192,3 +222,47 @@ void with_symmetry(symmetry which, const System& sys, const std::vector<double>&
 }
 
 }  // namespace mechcheck::laws::lagrange
+
+/// The AD kernels of with_model's models in the tier (jet, accelerations, momenta and their
+/// inverse, Hamilton's equations of the Legendre transform, dp/dt): explicit instantiation
+/// declarations here, the definitions once per tier in kernels.cpp. Every law using a
+/// model would otherwise instantiate and compile the nested AD of all five again: they were
+/// about half of hamilton.differential's unit (7 of 12 s at -Og).
+#define MECHCHECK_LAGRANGE_MOMENTA_KERNEL(EXTERN, T, M)                                     \
+  EXTERN template ::mechcheck::dynamic_vector<T> mechcheck::generalized_momenta<T, M>(       \
+      const M&, const ::mechcheck::dynamic_vector<T>&, const ::mechcheck::dynamic_vector<T>&, \
+      const T&);                                                                             \
+  EXTERN template ::mechcheck::dynamic_vector<T> mechcheck::velocities_from_momenta<T, M>(   \
+      const M&, const ::mechcheck::dynamic_vector<T>&, const ::mechcheck::dynamic_vector<T>&, \
+      const T&);
+#define MECHCHECK_LAGRANGE_KERNEL(EXTERN, T, M)                                              \
+  MECHCHECK_LAGRANGE_MOMENTA_KERNEL(EXTERN, T, M)                                            \
+  EXTERN template ::mechcheck::lagrangian_jet<T> mechcheck::lagrangian_jet_at<T, M>(          \
+      const M&, const ::mechcheck::dynamic_vector<T>&, const ::mechcheck::dynamic_vector<T>&, \
+      const T&, const std::string&);                                                         \
+  EXTERN template ::mechcheck::dynamic_vector<T> mechcheck::accelerations<T, M>(              \
+      const M&, const ::mechcheck::dynamic_vector<T>&, const ::mechcheck::dynamic_vector<T>&, \
+      const T&);                                                                             \
+  EXTERN template ::mechcheck::hamilton_rates<T>                                             \
+  mechcheck::hamilton_equations<T, ::mechcheck::legendre_hamiltonian<M>>(                   \
+      const ::mechcheck::legendre_hamiltonian<M>&, const ::mechcheck::dynamic_vector<T>&,    \
+      const ::mechcheck::dynamic_vector<T>&, const T&);                                      \
+  EXTERN template ::mechcheck::dynamic_vector<T> mechcheck::total_time_derivative_vector<    \
+      T, ::mechcheck::laws::lagrange::momenta_function<M>>(                                  \
+      const ::mechcheck::laws::lagrange::momenta_function<M>&,                               \
+      const ::mechcheck::dynamic_vector<T>&, const ::mechcheck::dynamic_vector<T>&,          \
+      const ::mechcheck::dynamic_vector<T>&, const T&);
+
+/// The kernels of every model of with_model in tier T, and radial_particle's momenta.
+#define MECHCHECK_LAGRANGE_KERNELS(EXTERN, T)                                    \
+  MECHCHECK_LAGRANGE_KERNEL(EXTERN, T, ::mechcheck::models::spring_pendulum<double>)     \
+  MECHCHECK_LAGRANGE_KERNEL(EXTERN, T, ::mechcheck::models::spherical_pendulum<double>)  \
+  MECHCHECK_LAGRANGE_KERNEL(EXTERN, T,                                           \
+                            ::mechcheck::models::rotating_pivot_pendulum<double>)  \
+  MECHCHECK_LAGRANGE_KERNEL(EXTERN, T, ::mechcheck::laws::lagrange::closed_system)        \
+  MECHCHECK_LAGRANGE_KERNEL(EXTERN, T, ::mechcheck::laws::lagrange::coupled_system)      \
+  MECHCHECK_LAGRANGE_MOMENTA_KERNEL(EXTERN, T, ::mechcheck::laws::lagrange::radial_particle)
+
+#ifdef MECHCHECK_LAW_TIER
+MECHCHECK_LAGRANGE_KERNELS(extern, MECHCHECK_LAW_TIER)
+#endif
