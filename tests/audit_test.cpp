@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <iostream>
 #include <string>
 
 #include "mechcheck/audit/audit.hpp"
@@ -103,6 +105,35 @@ struct triple_jump_double_weights {
   }
 };
 
+/// Kutta's third-order method (c = 0, 1/2, 1; a21 = 1/2, a31 = -1, a32 = 2; b = 1/6, 2/3,
+/// 1/6) with b1 off by WeightError * 1e-12: the weights sum to 1 + that, so the method
+/// converges to the flow of (1 + WeightError * 1e-12) times the vector field, not to the
+/// solution.
+template <class System, class Vec, int WeightError>
+struct kutta3 {
+  static constexpr int order = 3;
+  static constexpr bool symplectic = false;
+  static constexpr bool symmetric = false;
+  System system;
+  void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) const {
+    using S = typename Vec::Scalar;
+    using R = real_type_t<S>;
+    const S b1 = lift<S>(R(1) / 6 + R(WeightError) / R(1e12)), b2 = lift<S>(R(2) / 3),
+            b3 = lift<S>(R(1) / 6);
+    Vec k1q = x.q, k1p = x.p, k2q = x.q, k2p = x.p, k3q = x.q, k3p = x.p;
+    system.vector_field(x.q, x.p, k1q, k1p);
+    system.vector_field(Vec(x.q + h / 2 * k1q), Vec(x.p + h / 2 * k1p), k2q, k2p);
+    system.vector_field(Vec(x.q + h * (2 * k2q - k1q)), Vec(x.p + h * (2 * k2p - k1p)), k3q,
+                        k3p);
+    x.q += h * (b1 * k1q + b2 * k2q + b3 * k3q);
+    x.p += h * (b1 * k1p + b2 * k2p + b3 * k3p);
+  }
+};
+template <class S, class V>
+using kutta3_exact = kutta3<S, V, 0>;
+template <class S, class V>
+using kutta3_off_1e11 = kutta3<S, V, 10>;
+
 template <class T>
 audit::audit_options quick() {
   audit::audit_options opt;
@@ -187,6 +218,37 @@ TEST(Audit, DoubleRoundedCoefficientsPassInDoubleFailInMpfr50) {
   expect(d, "order", outcome::confirmed);
   const auto m = audit_of<triple_jump_double_weights, mpfr50>("triple jump, double weights");
   expect(m, "order", outcome::contradicted);
+}
+
+TEST(Audit, AWeightOffBy1e11StallsAboveTheFloorInDouble) {
+  audit::audit_options opt = quick<double>();
+  opt.problems.clear();  // every problem
+  const auto good = audit::audit_stepper(audit::method<kutta3_exact, double>("kutta3"), opt);
+  expect(good, "order", outcome::confirmed);
+  for (const auto& p : good.problems) EXPECT_FALSE(p.global.stalled) << p.problem;
+  const auto bad = audit::audit_stepper(audit::method<kutta3_off_1e11, double>("kutta3 1e-11"), opt);
+  expect(bad, "order", outcome::contradicted);
+  EXPECT_EQ(bad.find("order")->measured, "stalls");
+  int stalled = 0;
+  for (const auto& p : bad.problems) {
+    if (!p.global.stalled) continue;
+    ++stalled;
+    const audit::stall& s = *p.global.stalled;
+    // The limit is ~1e-11 t |f| / |x| away: between 1e-12 and 1e-10, far above the floor.
+    EXPECT_GT(s.error, 1e-12) << p.problem;
+    EXPECT_LT(s.error, 1e-10) << p.problem;
+    EXPECT_GE(s.margin, audit::floor_margin) << p.problem;
+    EXPECT_GE(s.error, audit::stall_ratio * s.change) << p.problem;
+  }
+  EXPECT_GE(stalled, 1);
+  EXPECT_NE(bad.find("order")->evidence.find("not to 0"), std::string::npos)
+      << bad.find("order")->evidence;
+  if (std::getenv("MECHCHECK_SHOW")) {
+    std::cout << bad.find("order")->evidence << "\n";
+    for (const auto& p : bad.problems)
+      for (const auto& pt : p.global.points)
+        std::cout << p.problem << " " << pt.h << " " << pt.error << " " << pt.change << " " << pt.evaluations << "\n";
+  }
 }
 
 TEST(Audit, RefusesUnknownProblemsAndBadOptions) {

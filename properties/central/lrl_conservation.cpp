@@ -6,20 +6,24 @@ using namespace mechcheck::laws::central;
 struct lrl_conservation {
   static law_info info() {
     return {"central.lrl_conservation",
-            "The Laplace-Runge-Lenz vector is conserved: {A_i, H} = 0 exactly, and along "
-            "integrated Kepler orbits its drift vanishes as h^8 (Gauss-Legendre 4)",
+            "The Laplace-Runge-Lenz vector is conserved: {A_i, H} = 0 exactly (attractive "
+            "and repulsive 1/r potentials), and along integrated Kepler orbits its drift vanishes as h^8 (Gauss-Legendre 4)",
             {"77", "267", "268"}};
   }
   // Brackets of AD gradients: products of |p|^2 |q|, mu k |p|/|q| terms: k = 64 on
-  // (|p|^2 + mu k/|q|)(|p| + 1)(|q| + 1)/mu. Integration: truncation model C h^8.
+  // (|p|^2 + mu |k|/|q|)(|p| + 1)(|q| + 1)/mu. Integration: truncation model C h^8.
+  // The bracket holds for U = -k/r of either sign of k (repulsive: k < 0; eq 77 with the
+  // same A = p x M - mu k r/|r|); the integrated orbits are attractive.
   template <class T>
   static void property() {
     const auto c = random_constants<T>();
     const auto [r, v] = random_state<T>();
-    const kepler_functions<T> f{c.mu, c.k};
+    const T k = *rc::gen::arbitrary<bool>() ? c.k : T(-c.k);
+    RC_TAG(k > 0 ? "attractive" : "repulsive");
+    const kepler_functions<T> f{c.mu, k};
     const mc::phase_point<T> x(dynamic_vector<T>(r), dynamic_vector<T>(c.mu * v));
     const T pn = c.mu * v.norm(), qn = r.norm();
-    const T scale = (pn * pn + c.mu * c.k / qn) * (pn + 1) * (qn + 1) / c.mu;
+    const T scale = (pn * pn + c.mu * c.k / qn) * (pn + 1) * (qn + 1) / c.mu;  // c.k = |k|
     for (int i = 0; i < 3; ++i)
       check_zero("{A_" + std::to_string(i + 1) + ", H}",
                  mc::poisson_bracket(f.lrl(i), f.hamiltonian(), x), scale, 64);

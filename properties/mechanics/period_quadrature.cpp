@@ -81,7 +81,7 @@ struct period_quadrature {
     using std::acos;
     using std::cos;
     using std::sqrt;
-    const int kind = *rc::gen::inRange(0, 3);
+    const int kind = *gen::uniform_int(0, 2);
     RC_TAG(kind == 0 ? "oscillator" : kind == 1 ? "quartic" : "pendulum");
     const T a = kind == 2 ? T(*gen::dyadic(0.125, 2.5)) : T(*gen::dyadic(0.25, 2));
     const even_well<T> w{kind, T(*gen::positive()), T(*gen::positive()), T(*gen::positive()), a};

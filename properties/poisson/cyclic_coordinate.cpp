@@ -14,7 +14,7 @@ struct cyclic_coordinate {
   template <class T>
   static void property() {
     const int n = *gen::degrees_of_freedom();
-    const int k = *rc::gen::inRange(0, n);
+    const int k = *gen::uniform_int(0, n - 1);
     const auto hamiltonian = *gen::smooth_functions_without_q(n, k);
     const auto x = (*gen::phase_points(n)).template at<T>();
     RC_TAG(n);

@@ -36,7 +36,7 @@ void check_matrices(const std::string& what, const matrix3<T>& computed,
 /// A cloud of 1 to 6 point masses in [-2, 2]^3.
 template <class T>
 mc::point_cloud<T> random_cloud() {
-  const int n = *rc::gen::inRange(1, 7);
+  const int n = *gen::uniform_int(1, 6);
   mc::point_cloud<T> cloud;
   for (int a = 0; a < n; ++a) {
     cloud.masses.push_back(T(*gen::positive()));

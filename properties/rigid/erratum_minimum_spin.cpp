@@ -14,7 +14,8 @@ struct erratum_minimum_spin {
   }
   template <class T>
   static void property() {
-    const auto top = random_heavy_top<T>();
+    // The printed form takes sqrt(mgl): it is defined for a top above its pivot only.
+    const auto top = random_heavy_top<T>(false);
     const T theta = T(*gen::dyadic(0.125, 1.5));
     using std::cos;
     using std::sqrt;

@@ -69,13 +69,15 @@ mc::phase_state<dynamic_vector<T>> free_motion(const mc::free_rigid_body<T>& bod
 }
 
 /// A free symmetric top with I1 = I2 in [1/2, 2], I3 / I1 in [1/8, 2] (the triangle
-/// inequality allows up to 2), |M| in [1/2, 2] and any attitude.
+/// inequality allows up to 2), |M| in [1/2, 2] and any attitude (theta of either sign,
+/// 1/8 <= |theta| <= 3: theta = 0 leaves phi and psi undetermined).
 template <class T>
 mc::reference::free_symmetric_top<T> random_symmetric_top() {
   const T i1 = T(*gen::dyadic(0.5, 2));
   const T i3 = i1 * T(*gen::dyadic(0.125, 2));
   const T m = T(*gen::dyadic(0.5, 2));
-  return {i1, i3, m, T(*gen::dyadic(-3, 3)), T(*gen::dyadic(0.125, 3)), T(*gen::dyadic(-3, 3))};
+  const double theta = *gen::dyadic(0.125, 3) * (*rc::gen::arbitrary<bool>() ? 1 : -1);
+  return {i1, i3, m, T(*gen::dyadic(-3, 3)), T(theta), T(*gen::dyadic(-3, 3))};
 }
 
 /// Moments I1 < I2 < I3 = (a + b, a + c, b + c) with a < b < c, spaced by >= 1/8.
@@ -101,10 +103,14 @@ mc::dynamic_matrix<T> euler_jacobian(const mc::free_rigid_body<T>& body, const v
 
 // ---------------------------------------------------------------- heavy symmetric top
 
-/// I1 in [1/2, 2], I3 in [1/4, 2], mgl in [1/4, 2].
+/// I1 in [1/2, 2], I3 in [1/4, 2], 1/4 <= |mgl| <= 2: the centre of mass above the pivot
+/// (mgl > 0) or hanging below it (mgl < 0); above only when `hanging` is false.
 template <class T>
-mc::heavy_top<T> random_heavy_top() {
-  return {T(*gen::dyadic(0.5, 2)), T(*gen::dyadic(0.25, 2)), T(*gen::dyadic(0.25, 2))};
+mc::heavy_top<T> random_heavy_top(bool hanging = true) {
+  const bool below = hanging && *rc::gen::arbitrary<bool>();
+  const double mgl = *gen::dyadic(0.25, 2) * (below ? -1 : 1);
+  RC_TAG(mgl > 0 ? "above the pivot" : "below the pivot");
+  return {T(*gen::dyadic(0.5, 2)), T(*gen::dyadic(0.25, 2)), T(mgl)};
 }
 
 /// q = (phi, theta, psi) with theta in [1/8, 3], qdot in [-2, 2]^3.
@@ -118,7 +124,8 @@ std::array<dynamic_vector<T>, 2> random_top_state() {
 
 template <class T>
 T top_scale(const mc::heavy_top<T>& top, const dynamic_vector<T>& v) {
-  return (top.i1 + top.i3) * (v.squaredNorm() + 1) + top.mgl;
+  using std::abs;
+  return (top.i1 + top.i3) * (v.squaredNorm() + 1) + abs(top.mgl);
 }
 
 }  // namespace mechcheck::laws::tops

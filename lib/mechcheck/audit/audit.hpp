@@ -125,21 +125,16 @@ inline std::vector<study_point> convergent_points(const std::vector<study_point>
   return out;
 }
 
-/// Global order: runs of n, 2n, 4n, ... steps over [0, t_end] from steps0 / 4 (runs that
-/// throw are skipped: a coarse step can leave the convergent regime), until the error
-/// reaches the rounding floor or the runs exceed max_steps. A halving enters the fit when
-/// both errors are 100 times the rounding floor eps sqrt(evaluations) (a random walk of
-/// one rounding per evaluation: the exponent then moves by less than 0.02) and below
-/// 10^-1 (inside the convergent regime).
+/// Global order: the halving study (studies.hpp) of runs over [0, t_end] from steps0 / 4
+/// steps up to max_steps, each run's error against the exact solution at t_end, and the
+/// change of the final state from the previous run (the stall detection's evidence).
 template <class T>
 order_study global_order(const stepper_under_audit<T>& s, const problem<T>& pr,
                          const audit_options& opt) {
-  order_study study;
   const state<T> reference = pr.exact(pr.t_end);
-  const double eps = eps_of<T>();
-  std::vector<study_point> valid;
-  double resolvable = 0;
-  for (long n = std::max<long>(2, pr.steps0 / 4); n <= opt.max_study_steps; n *= 2) {
+  std::optional<state<T>> previous;
+  const auto run = [&](long n) {
+    study_run r;
     pr.system.reset_evaluations();
     state<T> x = pr.initial;
     const T h = pr.t_end / T(n);
@@ -147,21 +142,22 @@ order_study global_order(const stepper_under_audit<T>& s, const problem<T>& pr,
       auto step = s.make(pr.system);
       for (long i = 0; i < n; ++i) step(x, h);
     } catch (const std::exception& e) {
-      study.note = "h = " + to_text(h) + ": " + e.what();
-      continue;
+      r.ok = false;
+      r.note = "h = " + to_text(h) + ": " + e.what();
+      previous.reset();
+      return r;
     }
-    const double evals = static_cast<double>(pr.system.evaluations());
-    const double error = to_double(T(distance(x, reference) / pr.scale));
-    study.points.push_back({to_double(h), error, evals});
-    const double floor = eps * std::sqrt(std::max(evals, 1.0));
-    resolvable = std::max(resolvable, 100 * floor);
-    if (error < 100 * floor) break;  // at the floor: finer steps only measure rounding
-    // Settled: three exponents agree within 0.05 (finer runs cost more and add nothing).
-    study.fit = fit_halvings(convergent_points(study.points), resolvable);
-    if (study.fit.used == 3 && study.fit.spread < 0.05) break;
-  }
-  study.fit = fit_halvings(convergent_points(study.points), resolvable);
-  return study;
+    r.evaluations = static_cast<double>(pr.system.evaluations());
+    r.error = to_double(T(distance(x, reference) / pr.scale));
+    if (previous) r.change = to_double(T(distance(x, *previous) / pr.scale));
+    previous = x;
+    return r;
+  };
+  const long max_steps = opt.max_study_steps > 0 ? static_cast<long>(opt.max_study_steps)
+                        : std::is_floating_point_v<T> ? 1L << 16
+                                                      : 1L << 14;
+  return halving_study(run, std::max<long>(2, pr.steps0 / 4), max_steps, eps_of<T>(),
+                       [&](long n) { return to_double(T(pr.t_end / T(n))); });
 }
 
 /// Local order: the error of one step from the initial state against the exact solution,
@@ -346,7 +342,8 @@ inline bool settled(const fitted_exponent& f) { return f.used >= 2 && f.spread <
 /// settled global fit. The declared order p is contradicted when a settled global fit
 /// is below p - 0.25 or a settled local fit below p + 1 - 0.25 (the method is worse than
 /// declared), or when the least settled global fit is above p + 0.75 and every settled
-/// local fit above p + 1.75 (the method is of higher order than declared).
+/// local fit above p + 1.75 (the method is of higher order than declared), or when a
+/// global study stalled above its rounding floor (the method converges to a wrong limit).
 /// Symplectic and symmetric: the defect within its rounding budget on every problem
 /// measured (claimed true), or above it on one at least (claimed false).
 inline std::vector<verdict> judge(const claims& declared, const std::vector<problem_audit>& ps) {
@@ -357,7 +354,7 @@ inline std::vector<verdict> judge(const claims& declared, const std::vector<prob
     v.claim = "order";
     v.declared = declared.order ? std::to_string(*declared.order) : "-";
     std::vector<double> global, local;
-    bool below = false;
+    bool below = false, stalled = false;
     std::string evidence;
     const auto describe = [](const char* what, const fitted_exponent& f) {
       return std::string(what) + " " + fixed(f.value) + " (spread " + fixed(f.spread) + ", " +
@@ -379,6 +376,13 @@ inline std::vector<verdict> judge(const claims& declared, const std::vector<prob
       } else {
         evidence += "global not resolved";
       }
+      if (pa.global.stalled) {
+        const stall& st = *pa.global.stalled;
+        stalled = true;
+        evidence += ", converges to " + sci(st.error) + ", not to 0 (at h = " + sci(st.h) +
+                    " the runs agree to " + sci(st.change) + "; floor eps sqrt(evaluations) = " +
+                    sci(st.floor) + ", error " + sci(st.margin) + " floors)";
+      }
       if (pa.local.fit.used > 0) {
         evidence += ", " + describe("local", pa.local.fit);
         if (settled(pa.local.fit)) {
@@ -396,11 +400,11 @@ inline std::vector<verdict> judge(const claims& declared, const std::vector<prob
                        !local.empty() &&
                        *std::min_element(local.begin(), local.end()) > p + 1.75;
     if (above) evidence += "every settled fit is above the declared order";
-    v.measured = global.empty() ? "-" : fixed(least);
+    v.measured = stalled ? "stalls" : global.empty() ? "-" : fixed(least);
     v.evidence = evidence;
-    v.result = global.empty() && local.empty() ? outcome::not_measured
+    v.result = global.empty() && local.empty() && !stalled ? outcome::not_measured
                : !declared.order              ? outcome::not_declared
-               : below || above               ? outcome::contradicted
+               : below || above || stalled    ? outcome::contradicted
                : global.empty()               ? outcome::not_measured
                                               : outcome::confirmed;
     out.push_back(v);
@@ -458,9 +462,10 @@ stepper_audit audit_stepper(const stepper_under_audit<T>& s,
         throw domain_error("audit_stepper: no problem named '" + name + "' (known:" + known +
                            ")");
       }
-  if (opt.long_run_steps < 0 || opt.max_study_steps < 2 || opt.max_local_halvings < 1)
+  if (opt.long_run_steps < 0 || (opt.max_study_steps != 0 && opt.max_study_steps < 2) ||
+      opt.max_local_halvings < 1)
     throw domain_error("audit_stepper: long_run_steps must be >= 0 (got " +
-                       std::to_string(opt.long_run_steps) + "), max_study_steps >= 2 (got " +
+                       std::to_string(opt.long_run_steps) + "), max_study_steps 0 or >= 2 (got " +
                        std::to_string(opt.max_study_steps) + "), max_local_halvings >= 1 (got " +
                        std::to_string(opt.max_local_halvings) + ")");
   const auto t0 = std::chrono::steady_clock::now();

@@ -80,7 +80,12 @@ std::string verdict_cell(const stepper_audit& a) {
   return any ? "claims hold" : "nothing declared";
 }
 
-json to_json(const study_point& p) { return json::array({p.h, p.error, p.evaluations}); }
+/// [h, error, evaluations] and, where known, the change from the previous run.
+json to_json(const study_point& p) {
+  json j = json::array({p.h, p.error, p.evaluations});
+  if (p.change >= 0) j.push_back(p.change);
+  return j;
+}
 
 json to_json(const fitted_exponent& f) {
   json j = {{"value", f.value}, {"spread", f.spread}, {"used", f.used}};
@@ -92,6 +97,10 @@ json to_json(const order_study& s) {
   json points = json::array();
   for (const auto& p : s.points) points.push_back(to_json(p));
   json j = {{"fit", to_json(s.fit)}, {"points", points}};
+  if (s.stalled)
+    j["stall"] = {{"h", s.stalled->h},         {"error", s.stalled->error},
+                  {"change", s.stalled->change}, {"floor", s.stalled->floor},
+                  {"margin", s.stalled->margin}};
   if (!s.note.empty()) j["note"] = s.note;
   return j;
 }

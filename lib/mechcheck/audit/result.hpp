@@ -14,7 +14,10 @@ struct audit_options {
   std::vector<std::string> problems;           ///< names to audit on; empty: all
   std::vector<std::string> long_run_problems;  ///< names for the long run; empty: all
   long long long_run_steps = 100000;           ///< steps of the long run (>= 10^5)
-  long long max_study_steps = 1 << 14;         ///< largest run of the global study
+  /// Largest run of the global study; 0: 2^16 steps in built-in floating types, 2^14 in
+  /// the others (a stall of the error above the rounding floor shows at fine steps: a
+  /// third-order method whose weights sum to 1 + 1e-11 in double from 2^15 steps on).
+  long long max_study_steps = 0;
   int max_local_halvings = 48;                 ///< halvings of the one-step studies
   bool timing = true;                          ///< measure time per step (not reproducible)
   std::function<void(const std::string&)> progress;  ///< called as the audit goes
@@ -25,6 +28,7 @@ struct study_point {
   double h = 0;
   double error = 0;
   double evaluations = 0;  ///< force or vector-field evaluations it took (0 if not counted)
+  double change = -1;      ///< |x(h) - x(2h)| / scale from the previous run (-1: none)
 };
 
 /// The exponent fitted over the asymptotic range of a study.
@@ -42,10 +46,21 @@ struct claims {
   std::optional<bool> symmetric;
 };
 
+/// An error that stopped falling above its rounding floor: the runs converge (they agree
+/// with each other far better than with the exact solution) to a limit that is not it.
+struct stall {
+  double h = 0;            ///< the finest step of the study
+  double error = 0;        ///< the error there: the distance of the limit from the solution
+  double change = 0;       ///< |x(h) - x(2h)| there: how well the runs agree
+  double floor = 0;        ///< the rounding-floor model there, eps sqrt(evaluations)
+  double margin = 0;       ///< error / floor (a stall needs >= stall_margin)
+};
+
 /// A convergence study: its points and the fitted exponent.
 struct order_study {
   std::vector<study_point> points;
   fitted_exponent fit;
+  std::optional<stall> stalled;  ///< the error stopped falling above the floor
   std::string note;  ///< why points are missing (a step that threw), if any
 };
 

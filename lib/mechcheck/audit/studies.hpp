@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -76,6 +77,70 @@ inline fitted_exponent fit_halvings(const std::vector<study_point>& points, doub
   out.spread = last.back() - last.front();
   out.used = static_cast<int>(k);
   return out;
+}
+
+/// A run of a halving study: the error of n steps against the exact solution (relative to
+/// the state's scale), the evaluations they took, and |x_n - x_(n/2)| / scale, the change
+/// from the previous run (negative: not known). ok = false: the run failed (a step
+/// threw), with `note` saying why.
+struct study_run {
+  bool ok = true;
+  double error = 0;
+  double evaluations = 0;
+  double change = -1;
+  std::string note;
+};
+
+/// The rounding-floor model of a run of m evaluations in a tier of epsilon eps: one
+/// rounding per evaluation, as a random walk, eps sqrt(m) (relative to the state's
+/// scale). A halving enters the fit when both errors are `floor_margin` times it: the
+/// exponent then moves by less than 0.02.
+inline double rounding_floor(double eps, double evaluations) {
+  return eps * std::sqrt(std::max(evaluations, 1.0));
+}
+inline constexpr double floor_margin = 100;
+/// A stall: at the study's finest run the error is at least floor_margin floors and at
+/// least stall_ratio times the change from the previous run. A converging method of order
+/// p has error ~ change / (2^p - 1) <= change there; a method converging to a wrong limit
+/// at distance S has error ~ S and change ~ C h^p -> 0.
+inline constexpr double stall_ratio = 8;
+
+/// Global order study: runs of n = n0, 2 n0, 4 n0, ... steps (run(n) -> study_run; failed
+/// runs are skipped: a coarse step can leave the convergent regime) until a run's error is
+/// within floor_margin of its rounding floor (finer steps measure rounding only) or n
+/// exceeds max_steps. The fit takes the halvings inside the convergent regime (errors
+/// below 1/10) whose errors are both above floor_margin times the largest floor; a stall
+/// (above) is reported with its evidence.
+template <class Run>
+order_study halving_study(Run&& run, long n0, long max_steps, double eps,
+                          const std::function<double(long)>& step_of) {
+  order_study study;
+  double resolvable = 0;
+  for (long n = n0; n <= max_steps; n *= 2) {
+    const study_run r = run(n);
+    if (!r.ok || !std::isfinite(r.error)) {
+      study.note = r.ok ? "n = " + std::to_string(n) + " steps: the error is not finite (the run "
+                          "diverged)"
+                        : r.note;
+      continue;
+    }
+    study.points.push_back({step_of(n), r.error, r.evaluations, r.change});
+    const double floor = rounding_floor(eps, r.evaluations);
+    resolvable = std::max(resolvable, floor_margin * floor);
+    if (!(r.error >= floor_margin * floor)) break;  // at the floor (NaN ends it too)
+  }
+  std::vector<study_point> convergent;
+  for (const auto& p : study.points)
+    if (p.error < 0.1) convergent.push_back(p);
+  study.fit = fit_halvings(convergent, resolvable);
+  if (!study.points.empty()) {
+    const study_point& last = study.points.back();
+    const double floor = rounding_floor(eps, last.evaluations);
+    if (last.change >= 0 && last.error < 0.1 && last.error >= floor_margin * floor &&
+        last.error >= stall_ratio * last.change)
+      study.stalled = stall{last.h, last.error, last.change, floor, last.error / floor};
+  }
+  return study;
 }
 
 /// Growth of an error with time: the exponent g of rms(error) ~ t^g over logarithmic

@@ -186,6 +186,8 @@ void require_eccentricity(const T& e, const char* where, bool elliptic) {
   if (!elliptic && !(e > 1))
     throw domain_error(std::string(where) + ": eccentricity " + to_text(e) +
                        " is not above 1 (a hyperbola is required)");
+  if (elliptic)
+    observe_region(where, "eccentricity", e == 0 ? "circle" : "ellipse", {"circle", "ellipse"});
 }
 /// Any conic: a finite e >= 0.
 template <class T>
@@ -193,6 +195,9 @@ void require_conic(const T& e, const char* where) {
   if (!is_finite(e)) throw non_finite_error(std::string(where) + ": eccentricity " + to_text(e));
   if (!(e >= 0))
     throw domain_error(std::string(where) + ": eccentricity " + to_text(e) + " is negative");
+  observe_region(where, "eccentricity",
+                 e == 0 ? "circle" : e < 1 ? "ellipse" : e == 1 ? "parabola" : "hyperbola",
+                 {"circle", "ellipse", "parabola", "hyperbola"});
 }
 }  // namespace detail
 

@@ -34,6 +34,7 @@ class radial_orbit {
     if (!is_finite(c_) || !is_finite(n_) || !(c_ * n_ > 0))
       throw domain_error("radial_orbit: U = c r^n needs c n > 0 (attractive), got c = " +
                          to_text(c_) + ", n = " + to_text(n_));
+    observe_sign(n_, "radial_orbit", "n");
     if (!(r2_ > r1_) || !is_finite(r2_))
       throw domain_error("radial_orbit: turning points need r1 < r2, got r1 = " + to_text(r1_) +
                          ", r2 = " + to_text(r2_));

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "mechcheck/core/autodiff.hpp"
+#include "mechcheck/core/domain.hpp"
 #include "mechcheck/core/errors.hpp"
 
 namespace mechcheck {
@@ -61,12 +62,20 @@ void require_finite_vector(const Eigen::MatrixBase<Derived>& v, const std::strin
                            to_text(v(i)));
 }
 
+/// Reports the sign of an accepted real parameter whose domain has both signs (for the
+/// domain coverage of the property suite, core/domain.hpp).
+template <class P>
+void observe_sign(const P& value, const char* where, const char* what) {
+  observe_region(where, what, sign_region(innermost_value(value)), {"negative", "positive"});
+}
+
 /// Throws non_finite_error "where: what must be finite, got value".
 template <class P>
 void require_finite_value(const P& value, const char* where, const char* what) {
   if (!is_finite(value))
     throw non_finite_error(std::string(where) + ": " + what + " must be finite, got " +
                            to_text(value));
+  observe_sign(value, where, what);
 }
 
 /// Throws domain_error "where: what must be positive and finite, got value"; a subnormal
@@ -81,6 +90,7 @@ void require_positive(const P& value, const char* where, const char* what) {
   if (innermost_value(value) < std::numeric_limits<R>::min())
     throw domain_error(std::string(where) + ": " + what + " must be a normal number, got " +
                        to_text(value) + " (subnormal)");
+  observe_region(where, what, "positive", {"positive"});
 }
 
 /// Throws domain_error "where: what must be non-negative and finite, got value".
@@ -89,6 +99,7 @@ void require_non_negative(const P& value, const char* where, const char* what) {
   if (!(is_finite(value) && value >= 0))
     throw domain_error(std::string(where) + ": " + what +
                        " must be non-negative and finite, got " + to_text(value));
+  observe_region(where, what, sign_region(innermost_value(value)), {"zero", "positive"});
 }
 
 }  // namespace mechcheck

@@ -149,4 +149,120 @@ coverage check_coverage(const std::vector<equation_entry>& map,
   return c;
 }
 
+std::vector<domain_exemption> read_domain_map(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("read_domain_map: cannot read " + file.string());
+  std::vector<domain_exemption> map;
+  int number = 0;
+  for (std::string text; std::getline(in, text);) {
+    ++number;
+    if (text.empty() || text[0] == '#') continue;
+    const auto fields = split(text, '\t');
+    if (fields.size() != 4 || fields[0].empty() || fields[1].empty() || fields[2].empty() ||
+        fields[3].empty())
+      throw std::runtime_error("read_domain_map: " + file.string() + ":" +
+                               std::to_string(number) +
+                               ": needs 4 non-empty tab-separated fields: where, what, region "
+                               "('*' for the whole parameter), reason");
+    map.push_back({fields[0], fields[1], fields[2], fields[3], number});
+  }
+  return map;
+}
+
+std::vector<std::pair<std::string, std::string>> read_parameter_list(
+    const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("read_parameter_list: cannot read " + file.string());
+  std::vector<std::pair<std::string, std::string>> out;
+  int number = 0;
+  for (std::string text; std::getline(in, text);) {
+    ++number;
+    if (text.empty() || text[0] == '#') continue;
+    const auto fields = split(text, '\t');
+    if (fields.size() != 2)
+      throw std::runtime_error("read_parameter_list: " + file.string() + ":" +
+                               std::to_string(number) + ": needs 'where<TAB>what'");
+    out.emplace_back(fields[0], fields[1]);
+  }
+  return out;
+}
+
+std::string domain_coverage::line() const {
+  return std::to_string(parameters) + " validated parameters: " + std::to_string(complete) +
+         " reached in every region of their domain, " + std::to_string(left_out) +
+         " with a region left out for a stated reason, " + std::to_string(problems.size()) +
+         " problems";
+}
+
+domain_coverage check_domains(const std::vector<law_result>& rows,
+                              const std::vector<domain_exemption>& map,
+                              const std::vector<std::pair<std::string, std::string>>& listed) {
+  using key = std::pair<std::string, std::string>;
+  struct reach {
+    std::vector<std::string> regions;
+    std::map<std::string, std::string> by;  // region -> first law reaching it
+  };
+  std::map<key, reach> reached;
+  for (const auto& r : rows)
+    for (const auto& d : r.domains) {
+      auto& e = reached[{d.where, d.what}];
+      if (e.regions.empty()) e.regions = d.regions;
+      for (const auto& [region, n] : d.cases)
+        if (n > 0) e.by.emplace(region, r.info.id);
+    }
+  std::map<std::pair<key, std::string>, const domain_exemption*> exempt;
+  for (const auto& m : map) exempt[{{m.where, m.what}, m.region}] = &m;
+  std::set<key> all(listed.begin(), listed.end());
+  for (const auto& [k, e] : reached) all.insert(k);
+
+  domain_coverage c;
+  const auto name = [](const key& k) { return k.first + " " + k.second; };
+  for (const auto& k : all) {
+    ++c.parameters;
+    const auto it = reached.find(k);
+    if (it == reached.end() || it->second.by.empty()) {
+      if (const auto x = exempt.find({k, "*"}); x != exempt.end()) {
+        ++c.left_out;
+        c.exempted.push_back(name(k) + ": not drawn (" + x->second->reason + ")");
+      } else {
+        c.problems.push_back(name(k) + ": validated, but no law's cases reach it");
+      }
+      continue;
+    }
+    bool complete = true, left = false;
+    for (const auto& region : it->second.regions) {
+      if (it->second.by.count(region)) continue;
+      complete = false;
+      if (const auto x = exempt.find({k, region}); x != exempt.end()) {
+        left = true;
+        c.exempted.push_back(name(k) + ": " + region + " not drawn (" + x->second->reason + ")");
+      } else {
+        c.problems.push_back(name(k) + ": no law draws it " + region);
+      }
+    }
+    if (complete) ++c.complete;
+    if (left) ++c.left_out;
+  }
+  // A map entry must stay true: its parameter exists and its region is not reached.
+  for (const auto& m : map) {
+    const key k{m.where, m.what};
+    if (!all.count(k)) {
+      c.problems.push_back("domain map line " + std::to_string(m.line) + ": " + name(k) +
+                           " is neither listed nor reached (renamed?)");
+      continue;
+    }
+    const auto it = reached.find(k);
+    if (it == reached.end()) continue;
+    if (m.region == "*" && !it->second.by.empty())
+      c.problems.push_back("domain map line " + std::to_string(m.line) + ": " + name(k) +
+                           " is said not to be drawn, but " + it->second.by.begin()->second +
+                           " reaches it");
+    else if (const auto b = it->second.by.find(m.region); b != it->second.by.end())
+      c.problems.push_back("domain map line " + std::to_string(m.line) + ": " + name(k) + " " +
+                           m.region + " is said not to be drawn, but " + b->second +
+                           " reaches it");
+  }
+  return c;
+}
+
 }  // namespace mechcheck::harness

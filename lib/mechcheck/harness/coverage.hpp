@@ -50,4 +50,41 @@ struct coverage {
 coverage check_coverage(const std::vector<equation_entry>& map,
                         const std::vector<law_result>& rows, int last_equation);
 
+/// The domain map (properties/domains.tsv): validated parameters and regions of their
+/// domains that the property suite leaves out on purpose, each with its reason, one a line:
+///
+///     <where>  <what>  <region>  <reason>
+///
+/// and the list of validated parameters in the sources (ci/properties greps it), one a
+/// line as "<where>\t<what>". check_domains compares both with the regions the laws'
+/// cases reached (law_result::domains): every listed parameter must be reached, every
+/// region of a reached parameter's domain too, unless the map gives a reason.
+struct domain_exemption {
+  std::string where, what, region, reason;
+  int line = 0;
+};
+
+/// Reads the map; throws std::runtime_error naming the file and line of a malformed entry.
+std::vector<domain_exemption> read_domain_map(const std::filesystem::path& file);
+
+/// Reads the list of validated parameters ("where<TAB>what" a line; '#' comments).
+std::vector<std::pair<std::string, std::string>> read_parameter_list(
+    const std::filesystem::path& file);
+
+struct domain_coverage {
+  int parameters = 0;  ///< validated parameters, listed or reached
+  int complete = 0;    ///< every region of the domain reached by some law
+  int left_out = 0;    ///< a region or the parameter left out, with a reason in the map
+  std::vector<std::string> problems;  ///< unreached without a reason, or a stale map entry
+  std::vector<std::string> exempted;  ///< "where what: region (reason)"
+
+  /// "112 validated parameters: 104 reached in every region, 8 left out with a reason, 0
+  /// unreached".
+  std::string line() const;
+};
+
+domain_coverage check_domains(const std::vector<law_result>& rows,
+                              const std::vector<domain_exemption>& map,
+                              const std::vector<std::pair<std::string, std::string>>& listed);
+
 }  // namespace mechcheck::harness

@@ -5,14 +5,23 @@
 
 namespace mechcheck::generators {
 
+rc::Gen<int> uniform_int(int lo, int hi) {
+  return rc::gen::resize(rc::kNominalSize, rc::gen::inRange(lo, hi + 1));
+}
+
+rc::Gen<int> int_with_ends(int lo, int hi) {
+  return rc::gen::weightedOneOf<int>(
+      {{14, uniform_int(lo, hi)}, {1, rc::gen::just(lo)}, {1, rc::gen::just(hi)}});
+}
+
 rc::Gen<double> dyadic(double lo, double hi) {
   const int a = static_cast<int>(std::ceil(lo * 256)), b = static_cast<int>(std::floor(hi * 256));
-  return rc::gen::map(rc::gen::inRange(a, b + 1), [](int k) { return k / 256.0; });
+  return rc::gen::map(int_with_ends(a, b), [](int k) { return k / 256.0; });
 }
 
 rc::Gen<double> dyadic_towards_zero(double bound) {
   const int top = static_cast<int>(std::floor(bound * 256));
-  return rc::gen::map(rc::gen::pair(rc::gen::inRange(0, top + 1), rc::gen::arbitrary<bool>()),
+  return rc::gen::map(rc::gen::pair(int_with_ends(0, top), rc::gen::arbitrary<bool>()),
                       [](const std::pair<int, bool>& v) {
                         return v.second ? -v.first / 256.0 : v.first / 256.0;
                       });
@@ -23,14 +32,14 @@ rc::Gen<double> coordinate() { return dyadic_towards_zero(2); }
 rc::Gen<double> positive() { return dyadic(0.25, 4); }
 
 rc::Gen<double> coefficient() {
-  return rc::gen::map(rc::gen::pair(rc::gen::inRange(0, 257), rc::gen::arbitrary<bool>()),
+  return rc::gen::map(rc::gen::pair(int_with_ends(0, 256), rc::gen::arbitrary<bool>()),
                       [](const std::pair<int, bool>& v) {
                         const double c = 1 + v.first / 256.0;
                         return v.second ? -c : c;
                       });
 }
 
-rc::Gen<int> degrees_of_freedom() { return rc::gen::inRange(1, 4); }
+rc::Gen<int> degrees_of_freedom() { return uniform_int(1, 3); }
 
 void showValue(const phase_sample& x, std::ostream& os) {
   const auto vec = [&](const std::vector<double>& v) {
@@ -75,16 +84,16 @@ rc::Gen<smooth_function::term> smooth_term(int dof) {
     smooth_function::term t;
     t.coefficient = *coefficient();
     t.exponents.assign(2 * dof, 0);
-    const int degree = *rc::gen::inRange(0, 4);
+    const int degree = *uniform_int(0, 3);
     for (int d = 0; d < degree; ++d) {
-      const int i = *rc::gen::inRange(0, 2 * dof);
+      const int i = *uniform_int(0, 2 * dof - 1);
       if (t.exponents[i] < 2) ++t.exponents[i];
     }
     t.kind = *rc::gen::element(smooth_function::wave::none, smooth_function::wave::none,
                                smooth_function::wave::sine, smooth_function::wave::cosine);
     t.frequencies.assign(2 * dof, 0);
     if (t.kind != smooth_function::wave::none) {
-      for (auto& a : t.frequencies) a = *rc::gen::inRange(-2, 3);
+      for (auto& a : t.frequencies) a = *uniform_int(-2, 2);
       t.phase = *dyadic_towards_zero(3);
     }
     return t;
@@ -97,7 +106,7 @@ rc::Gen<smooth_function> smooth_functions(int dof) {
   return rc::gen::exec([dof] {
     smooth_function f;
     f.dof = dof;
-    const int count = *rc::gen::inRange(1, 5);
+    const int count = *uniform_int(1, 4);
     for (int k = 0; k < count; ++k) f.terms.push_back(*detail::smooth_term(dof));
     return f;
   });
@@ -121,7 +130,7 @@ void showValue(const radial_potential& u, std::ostream& os) {
 rc::Gen<radial_potential> radial_potentials() {
   return rc::gen::exec([] {
     radial_potential u;
-    const int count = *rc::gen::inRange(1, 4);
+    const int count = *uniform_int(1, 3);
     for (int k = 0; k < count; ++k)
       u.terms.emplace_back(*rc::gen::element(-2, -1, 1, 2, 3), *coefficient());
     return u;
@@ -189,7 +198,7 @@ void showValue(const particle_sample& s, std::ostream& os) {
 rc::Gen<particle_sample> particle_samples(int min_particles, int max_particles) {
   return rc::gen::exec([=] {
     particle_sample s;
-    const int n = *rc::gen::inRange(min_particles, max_particles + 1);
+    const int n = *uniform_int(min_particles, max_particles);
     for (int i = 0; i < n; ++i) {
       s.masses.push_back(*positive());
       // Particle i sits within 1/2 of the corner i of the cube [-1, 1]^3: every pair is
@@ -255,7 +264,7 @@ void draw_particles(model_case& c) {
 rc::Gen<model_case> model_cases() {
   return rc::gen::exec([] {
     model_case c;
-    c.which = *rc::gen::inRange(0, 6);
+    c.which = *uniform_int(0, 5);
     switch (c.which) {
       case 0:  // m, k, l, g; x in [-1/2, 1/2] with l >= 1
         c.params = {*positive(), *positive(), *dyadic(1, 3), *positive()};
@@ -267,9 +276,8 @@ rc::Gen<model_case> model_cases() {
         c.q = {*dyadic(0.5, 1.5), *coordinate()};
         c.qdot = *coordinates(2);
         break;
-      case 2:  // m, l, g, R, w
-        c.params = {*positive(), *positive(), *positive(), *positive(),
-                    *coefficient()};
+      case 2:  // m, l, g, R in [0, 4] (0: a fixed pivot), w
+        c.params = {*positive(), *positive(), *positive(), *dyadic(0, 4), *coefficient()};
         c.q = {*coordinate()};
         c.qdot = {*coordinate()};
         c.t = *coordinate();
@@ -284,7 +292,7 @@ rc::Gen<model_case> model_cases() {
 rc::Gen<model_case> closed_particle_cases() {
   return rc::gen::exec([] {
     model_case c;
-    c.which = *rc::gen::inRange(3, 6);
+    c.which = *uniform_int(3, 5);
     draw_particles(c);
     return c;
   });

@@ -21,10 +21,20 @@
 
 namespace mechcheck::generators {
 
-/// Dyadic numbers k / 256 in [lo, hi].
+/// An integer in [lo, hi], each equally likely in every case, shrinking towards lo.
+/// (RapidCheck's gen::inRange draws from a range scaled by the case's size, and a run of
+/// n cases has sizes below 100: in 1000 cases inRange(0, 257) never drew above 250, and
+/// inRange(1, 4) drew 3 in 11 of 100 cases.)
+rc::Gen<int> uniform_int(int lo, int hi);
+
+/// An integer in [lo, hi]: each end in 1/16 of the cases, else uniform_int.
+rc::Gen<int> int_with_ends(int lo, int hi);
+
+/// Dyadic numbers k / 256 in [lo, hi], each end in 1/16 of the cases, shrinking towards lo.
 rc::Gen<double> dyadic(double lo, double hi);
 
-/// Dyadic numbers k / 256 in [-bound, bound] that shrink towards 0.
+/// Dyadic numbers k / 256 in [-bound, bound] that shrink towards 0; 0 and |x| = bound
+/// each in 1/16 of the cases.
 rc::Gen<double> dyadic_towards_zero(double bound);
 
 /// A coordinate or momentum component in [-2, 2], shrinking towards 0.
@@ -33,7 +43,8 @@ rc::Gen<double> coordinate();
 /// A positive mass or stiffness in [1/4, 4].
 rc::Gen<double> positive();
 
-/// A coefficient with 1 <= |c| <= 2, shrinking towards 1.
+/// A coefficient with 1 <= |c| <= 2 of either sign, shrinking towards 1; |c| = 1 and
+/// |c| = 2 each in 1/16 of the cases.
 rc::Gen<double> coefficient();
 
 /// Degrees of freedom n in [1, 3].

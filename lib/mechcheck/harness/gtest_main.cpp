@@ -25,6 +25,14 @@ class law_test : public testing::Test {
     std::cout << r.info.id << " [" << r.tier << "] cases " << r.cases << ", max "
               << r.max_residual_eps << " eps, rms " << r.rms_residual_eps << " eps, budget "
               << r.budget_eps << " eps";
+    if (!r.distribution.empty()) {
+      std::cout << "\n  cases by class:";
+      for (const auto& [tags, n] : r.distribution) {
+        std::cout << " [";
+        for (std::size_t i = 0; i < tags.size(); ++i) std::cout << (i ? ", " : "") << tags[i];
+        std::cout << "] " << n;
+      }
+    }
     if (r.info.expect == expectation::falsified)
       std::cout << "\n  erratum (" << r.info.erratum << ") falsified by:\n" << r.counterexample;
     std::cout << std::endl;
@@ -64,6 +72,11 @@ int main(int argc, char** argv) {
   // seed a reader sees is the one that reproduces (each law's seed derives from it).
   if (!std::getenv("RC_PARAMS"))
     ::setenv("RC_PARAMS", ("seed=" + std::to_string(config.base_seed)).c_str(), 1);
+  // A law stopped at its time limit still leaves its row (outcome "timeout").
+  if (const char* dir = std::getenv("MECHCHECK_REPORT_DIR"); dir && *dir) {
+    const std::string rows = dir;
+    config.on_timeout = [rows](const law_result& r) { write_row(r, rows); };
+  }
   for (const auto& law : registry()) {
     testing::RegisterTest(law.info.id.c_str(), law.tier.c_str(), nullptr, nullptr, __FILE__,
                           __LINE__, [&law, config]() -> testing::Test* {

@@ -1,6 +1,7 @@
 #include "mechcheck/harness/report.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -15,6 +16,22 @@ namespace mechcheck::harness {
 namespace {
 using json = nlohmann::ordered_json;
 
+/// A number of the row; "inf", "-inf" or "nan" as text where it is not finite (JSON has
+/// no such numbers, and nlohmann_json would write null: a NaN residual must stay visible).
+json real(double x) {
+  if (std::isfinite(x)) return x;
+  return std::isnan(x) ? "nan" : x > 0 ? "inf" : "-inf";
+}
+
+double read_real(const json& j) {
+  if (j.is_number()) return j.get<double>();
+  const std::string s = j.get<std::string>();
+  if (s == "inf") return INFINITY;
+  if (s == "-inf") return -INFINITY;
+  if (s == "nan") return NAN;
+  throw std::runtime_error("'" + s + "' is not a number");
+}
+
 json to_json(const law_result& r) {
   json j;
   j["id"] = r.info.id;
@@ -24,19 +41,35 @@ json to_json(const law_result& r) {
   j["digits"] = r.digits;
   j["cases"] = r.cases;
   j["passed"] = r.passed;
-  j["max_residual_eps"] = r.max_residual_eps;
-  j["rms_residual_eps"] = r.rms_residual_eps;
-  j["budget_eps"] = r.budget_eps;
+  j["outcome"] = outcome_name(r.outcome);
+  j["max_residual_eps"] = real(r.max_residual_eps);
+  j["rms_residual_eps"] = real(r.rms_residual_eps);
+  j["budget_eps"] = real(r.budget_eps);
   j["worst_check"] = r.worst_check;
   if (r.exponent_checks > 0)
     j["exponent"] = {{"checks", r.exponent_checks},
-                     {"min_deviation", r.exponent_min_deviation},
-                     {"max_deviation", r.exponent_max_deviation},
-                     {"tolerance", r.exponent_tolerance}};
+                     {"min_deviation", real(r.exponent_min_deviation)},
+                     {"max_deviation", real(r.exponent_max_deviation)},
+                     {"tolerance", real(r.exponent_tolerance)}};
   if (r.model_checks > 0)
     j["model"] = {{"checks", r.model_checks},
-                  {"max_relative", r.model_max_relative},
-                  {"tolerance", r.model_tolerance}};
+                  {"max_relative", real(r.model_max_relative)},
+                  {"tolerance", real(r.model_tolerance)}};
+  if (!r.distribution.empty()) {
+    json d = json::array();
+    for (const auto& [tags, n] : r.distribution) d.push_back({{"tags", tags}, {"cases", n}});
+    j["distribution"] = d;
+  }
+  if (!r.domains.empty()) {
+    json d = json::array();
+    for (const auto& x : r.domains) {
+      json reached = json::object();
+      for (const auto& [region, n] : x.cases) reached[region] = n;
+      d.push_back({{"where", x.where}, {"what", x.what}, {"regions", x.regions},
+                   {"cases", reached}});
+    }
+    j["domains"] = d;
+  }
   j["base_seed"] = r.base_seed;
   j["seed"] = r.seed;
   j["reproduce"] = r.reproduce;
@@ -48,6 +81,12 @@ json to_json(const law_result& r) {
   return j;
 }
 
+run_outcome outcome_from_name(const std::string& name) {
+  for (const run_outcome o : all_outcomes)
+    if (name == outcome_name(o)) return o;
+  throw std::runtime_error("unknown outcome '" + name + "'");
+}
+
 law_result from_json(const json& j) {
   law_result r;
   r.info.id = j.at("id");
@@ -57,22 +96,23 @@ law_result from_json(const json& j) {
   r.digits = j.at("digits");
   r.cases = j.at("cases");
   r.passed = j.at("passed");
-  r.max_residual_eps = j.at("max_residual_eps");
-  r.rms_residual_eps = j.at("rms_residual_eps");
-  r.budget_eps = j.at("budget_eps");
+  r.outcome = outcome_from_name(j.at("outcome").get<std::string>());
+  r.max_residual_eps = read_real(j.at("max_residual_eps"));
+  r.rms_residual_eps = read_real(j.at("rms_residual_eps"));
+  r.budget_eps = read_real(j.at("budget_eps"));
   r.worst_check = j.at("worst_check");
   if (j.contains("exponent")) {
     const json& e = j.at("exponent");
     r.exponent_checks = e.at("checks");
-    r.exponent_min_deviation = e.at("min_deviation");
-    r.exponent_max_deviation = e.at("max_deviation");
-    r.exponent_tolerance = e.at("tolerance");
+    r.exponent_min_deviation = read_real(e.at("min_deviation"));
+    r.exponent_max_deviation = read_real(e.at("max_deviation"));
+    r.exponent_tolerance = read_real(e.at("tolerance"));
   }
   if (j.contains("model")) {
     const json& m = j.at("model");
     r.model_checks = m.at("checks");
-    r.model_max_relative = m.at("max_relative");
-    r.model_tolerance = m.at("tolerance");
+    r.model_max_relative = read_real(m.at("max_relative"));
+    r.model_tolerance = read_real(m.at("tolerance"));
   }
   r.base_seed = j.at("base_seed");
   r.seed = j.at("seed");
@@ -83,6 +123,20 @@ law_result from_json(const json& j) {
     r.counterexample = j.at("counterexample");
   }
   if (j.contains("message")) r.message = j.at("message");
+  if (j.contains("distribution"))
+    for (const json& d : j.at("distribution"))
+      r.distribution.emplace_back(d.at("tags").get<std::vector<std::string>>(),
+                                  d.at("cases").get<int>());
+  if (j.contains("domains"))
+    for (const json& d : j.at("domains")) {
+      domain_reach x{d.at("where"), d.at("what"),
+                     d.at("regions").get<std::vector<std::string>>(), {}};
+      for (const auto& [region, n] : d.at("cases").items()) x.cases.emplace_back(region, n.get<int>());
+      r.domains.push_back(std::move(x));
+    }
+  if (r.passed != passes(r.info.expect, r.outcome))
+    throw std::runtime_error("row " + r.info.id + ": passed = " + (r.passed ? "true" : "false") +
+                             " contradicts its outcome '" + outcome_name(r.outcome) + "'");
   return r;
 }
 
@@ -123,10 +177,30 @@ std::string eps_cell(const law_result& r, double x) {
 }
 
 std::string verdict(const law_result& r) {
-  if (r.info.expect == expectation::falsified) return r.passed ? "erratum shown" : "FAIL";
-  return r.passed ? "pass" : "FAIL";
+  if (r.passed) return r.info.expect == expectation::falsified ? "erratum shown" : "pass";
+  return std::string("FAIL (") + outcome_name(r.outcome) + ")";
+}
+
+/// "3 tags: dof 1: 31, dof 2: 35, dof 3: 34" style text of a distribution.
+std::string distribution_text(const law_result& r) {
+  std::string out;
+  for (const auto& [tags, n] : r.distribution) {
+    std::string t = tags.empty() ? "(untagged)" : join(tags, ", ");
+    out += (out.empty() ? "" : "; ") + t + ": " + std::to_string(n);
+  }
+  return out;
 }
 }  // namespace
+
+std::vector<std::pair<std::string, int>> count_outcomes(const std::vector<law_result>& rows) {
+  std::vector<std::pair<std::string, int>> out;
+  for (const run_outcome o : all_outcomes) {
+    int n = 0;
+    for (const auto& r : rows) n += r.outcome == o ? 1 : 0;
+    out.emplace_back(outcome_name(o), n);
+  }
+  return out;
+}
 
 void write_row(const law_result& row, const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
@@ -154,7 +228,7 @@ std::vector<law_result> read_rows(const std::filesystem::path& dir) {
 }
 
 void write_report(const std::vector<law_result>& rows, const std::filesystem::path& dir,
-                  const coverage* equations) {
+                  const coverage* equations, const domain_coverage* domains) {
   std::filesystem::create_directories(dir);
   json doc;
   doc["laws"] = json::array();
@@ -162,6 +236,8 @@ void write_report(const std::vector<law_result>& rows, const std::filesystem::pa
   for (const auto& r : rows)
     doc[r.info.expect == expectation::holds ? "laws" : "errata"].push_back(to_json(r));
   doc["base_seed"] = rows.empty() ? 0 : rows.front().base_seed;
+  doc["outcomes"] = json::object();
+  for (const auto& [name, n] : count_outcomes(rows)) doc["outcomes"][name] = n;
   if (equations) {
     json c;
     c["numbered"] = equations->numbered;
@@ -172,6 +248,14 @@ void write_report(const std::vector<law_result>& rows, const std::filesystem::pa
     c["summary"] = equations->line();
     doc["coverage"] = c;
   }
+  if (domains) {
+    doc["domains"] = {{"parameters", domains->parameters},
+                      {"complete", domains->complete},
+                      {"left_out", domains->left_out},
+                      {"exempted", domains->exempted},
+                      {"problems", domains->problems},
+                      {"summary", domains->line()}};
+  }
   write_file_atomically(dir / "laws.json", doc.dump(2) + "\n");
 
   std::ostringstream md;
@@ -180,6 +264,7 @@ void write_report(const std::vector<law_result>& rows, const std::filesystem::pa
         "budget is the tolerance the law derives from its computation. Truncation-model "
         "laws give the range of fitted exponent minus the model's, and its tolerance.\n\n";
   if (equations) md << "Coverage of the notes: " << equations->line() << ".\n\n";
+  if (domains) md << "Domains drawn: " << domains->line() << ".\n\n";
   md
      << "| law | title | eqs | tier | digits | cases | max eps | RMS eps | budget | "
         "model: exponent - p, rel. deviation | result |\n"
@@ -204,6 +289,12 @@ void write_report(const std::vector<law_result>& rows, const std::filesystem::pa
     md << "| " << r.info.id << " | " << join(r.info.equations, ", ") << " | " << r.tier << " | "
        << r.info.erratum << " | `" << ce << "` | " << verdict(r) << " |\n";
   }
+  md << "\n## Distributions\n\n"
+     << "How each law's cases fell into the classes it tags (RC_TAG, RC_CLASSIFY).\n\n"
+     << "| law | tier | cases by class |\n|---|---|---|\n";
+  for (const auto& r : rows)
+    if (!r.distribution.empty())
+      md << "| " << r.info.id << " | " << r.tier << " | " << distribution_text(r) << " |\n";
   write_file_atomically(dir / "laws.md", md.str());
 }
 

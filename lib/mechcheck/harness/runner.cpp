@@ -2,6 +2,7 @@
 #include <condition_variable>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <mutex>
 #include <sstream>
@@ -64,6 +65,38 @@ std::string executable_path() {
 }
 }  // namespace
 
+const char* outcome_name(run_outcome o) {
+  switch (o) {
+    case run_outcome::held: return "held";
+    case run_outcome::falsified: return "falsified";
+    case run_outcome::exception: return "exception";
+    case run_outcome::gave_up: return "gave up";
+    case run_outcome::no_checks: return "no checks";
+    case run_outcome::timeout: return "timeout";
+    case run_outcome::error: return "error";
+  }
+  return "error";
+}
+
+bool passes(expectation expect, run_outcome o) {
+  return expect == expectation::holds ? o == run_outcome::held : o == run_outcome::falsified;
+}
+
+static law_result empty_result(const law_info& info, const std::string& tier, int digits,
+                        const run_config& config) {
+  law_result r;
+  r.info = info;
+  r.tier = tier;
+  r.digits = digits;
+  r.base_seed = config.base_seed;
+  r.seed = config.seed_for(info.id);
+  std::ostringstream cmd;
+  cmd << "MECHCHECK_SEED=" << config.base_seed << " MECHCHECK_CASES=" << config.cases << " "
+      << executable_path() << " --gtest_filter='" << info.id << "." << tier << "'";
+  r.reproduce = cmd.str();
+  return r;
+}
+
 run_config run_config::from_environment() {
   run_config c;
   if (const char* s = std::getenv("MECHCHECK_SEED"); s && *s)
@@ -92,15 +125,15 @@ std::uint64_t run_config::seed_for(const std::string& law_id) const {
 }
 
 namespace {
+// A foreign exception becomes a failure whose description starts with this marker, so
+// that the outcome of the reported (shrunk) case is known: RapidCheck may shrink a check
+// failure into an exception, or the reverse.
+constexpr const char* exception_marker = "mechcheck: the property threw ";
+
 law_result make_result(const law_info& info, const std::string& tier, int digits,
                        const run_config& config, const rc::detail::TestResult& outcome,
                        const recorder& rec) {
-  law_result r;
-  r.info = info;
-  r.tier = tier;
-  r.digits = digits;
-  r.base_seed = config.base_seed;
-  r.seed = config.seed_for(info.id);
+  law_result r = empty_result(info, tier, digits, config);
   r.max_residual_eps = rec.max_eps();
   r.rms_residual_eps = rec.rms_eps();
   r.budget_eps = rec.budget_eps();
@@ -113,27 +146,36 @@ law_result make_result(const law_info& info, const std::string& tier, int digits
   r.model_max_relative = rec.model_max_relative();
   r.model_tolerance = rec.model_tolerance();
   r.cases = rec.cases();
-  {
-    std::ostringstream cmd;
-    cmd << "MECHCHECK_SEED=" << config.base_seed << " MECHCHECK_CASES=" << config.cases << " "
-        << executable_path() << " --gtest_filter='" << info.id << "." << tier << "'";
-    r.reproduce = cmd.str();
+  for (const auto& [key, d] : rec.domains()) {
+    domain_reach reach{key.first, key.second, d.regions, {}};
+    for (const auto& [region, n] : d.cases) reach.cases.emplace_back(region, n);
+    r.domains.push_back(std::move(reach));
   }
   const bool expect_hold = info.expect == expectation::holds;
   std::ostringstream msg;
-  if (outcome.template is<rc::detail::SuccessResult>() && rec.checks() == 0) {
-    r.passed = false;
-    msg << "law " << info.id << " recorded no check in " << r.cases
-        << " cases: a property that checks nothing cannot fail, so it cannot pass either"
-        << "\nReproduce: " << r.reproduce;
-  } else if (outcome.template is<rc::detail::SuccessResult>()) {
-    r.passed = expect_hold;
-    if (!expect_hold)
-      msg << "erratum not demonstrated: the printed form held in all " << r.cases
-          << " cases, so no counterexample falsifies it";
+  if (outcome.template is<rc::detail::SuccessResult>()) {
+    const auto& s = outcome.template get<rc::detail::SuccessResult>();
+    // RapidCheck shows a tag as C++ would print it: a string in quotes; the report shows
+    // the text.
+    for (const auto& [shown, n] : s.distribution) {
+      std::vector<std::string> tags = shown;
+      for (auto& t : tags)
+        if (t.size() >= 2 && t.front() == '"' && t.back() == '"') t = t.substr(1, t.size() - 2);
+      r.distribution.emplace_back(tags, n);
+    }
+    if (rec.checks() == 0) {
+      r.outcome = run_outcome::no_checks;
+      msg << "law " << info.id << " recorded no check in " << r.cases
+          << " cases: a property that checks nothing cannot fail, so it cannot pass either"
+          << "\nReproduce: " << r.reproduce;
+    } else {
+      r.outcome = run_outcome::held;
+      if (!expect_hold)
+        msg << "erratum not demonstrated: the printed form held in all " << r.cases
+            << " cases, so no counterexample falsifies it";
+    }
   } else if (outcome.template is<rc::detail::FailureResult>()) {
     const auto& f = outcome.template get<rc::detail::FailureResult>();
-    r.passed = !expect_hold;
     std::ostringstream ce;
     for (const auto& [type, value] : f.counterExample) ce << value << "\n";
     r.counterexample = ce.str();
@@ -142,9 +184,14 @@ law_result make_result(const law_info& info, const std::string& tier, int digits
     // the same cases, and its residual, the evidence (for an erratum, of the misprint),
     // is in both.
     r.worst_check = description;
-    if (expect_hold) {
-      msg << "law " << info.id << " fails in tier " << tier << " after " << f.numSuccess
-          << " passing cases.\n"
+    r.outcome = description.rfind(exception_marker, 0) == 0 ? run_outcome::exception
+                                                            : run_outcome::falsified;
+    // An erratum is shown by a check that fails, never by an exception: a printed form
+    // whose property throws has not been evaluated at all.
+    if (expect_hold || r.outcome == run_outcome::exception) {
+      msg << "law " << info.id
+          << (r.outcome == run_outcome::exception ? " threw an exception" : " fails")
+          << " in tier " << tier << " after " << f.numSuccess << " passing cases.\n"
           << description << "\n"
           << "Shrunk counterexample:\n"
           << r.counterexample << "Seed: MECHCHECK_SEED=" << config.base_seed
@@ -153,15 +200,18 @@ law_result make_result(const law_info& info, const std::string& tier, int digits
     }
   } else if (outcome.template is<rc::detail::GaveUpResult>()) {
     const auto& g = outcome.template get<rc::detail::GaveUpResult>();
-    r.passed = false;
+    r.outcome = run_outcome::gave_up;
     msg << "law " << info.id << " gave up after " << g.numSuccess
-        << " cases (too many discarded): " << g.description << "\nReproduce: " << r.reproduce;
+        << " cases (too many discarded): " << g.description
+        << "\nA law that gave up has not been checked on the cases asked for."
+        << "\nReproduce: " << r.reproduce;
   } else {
-    r.passed = false;
+    r.outcome = run_outcome::error;
     msg << "law " << info.id << ": RapidCheck error: "
         << outcome.template get<rc::detail::Error>().description << "\nReproduce: "
         << r.reproduce;
   }
+  r.passed = passes(info.expect, r.outcome);
   r.message = msg.str();
   return r;
 }
@@ -170,12 +220,14 @@ law_result make_result(const law_info& info, const std::string& tier, int digits
 /// otherwise be killed by ctest's TIMEOUT with no word of which law or case it was.
 class watchdog {
  public:
-  watchdog(std::string what, int seconds) : what_(std::move(what)), seconds_(seconds) {
+  watchdog(std::string what, int seconds, std::function<void()> on_expiry)
+      : what_(std::move(what)), seconds_(seconds), on_expiry_(std::move(on_expiry)) {
     thread_ = std::thread([this] {
       std::unique_lock<std::mutex> lock(mutex_);
       if (!done_cv_.wait_for(lock, std::chrono::seconds(seconds_), [this] { return done_; })) {
         std::cerr << "\nmechcheck: " << what_ << " exceeded its time limit of " << seconds_
                   << " s (MECHCHECK_LAW_TIMEOUT) and was stopped" << std::endl;
+        if (on_expiry_) on_expiry_();
         std::_Exit(124);
       }
     });
@@ -194,6 +246,7 @@ class watchdog {
  private:
   std::string what_;
   int seconds_;
+  std::function<void()> on_expiry_;
   std::mutex mutex_;
   std::condition_variable done_cv_;
   bool done_ = false;
@@ -206,7 +259,9 @@ law_result run_property(const law_info& info, std::string_view tier, int digits,
                         const run_config& config, void (*property)()) {
   recorder rec;
   recorder* const previous = active_recorder();
+  domain_observer* const previous_observer = active_domain_observer();
   active_recorder() = &rec;
+  active_domain_observer() = &rec;
   const auto body = [&rec, property] {
     rec.begin_case();
     try {
@@ -214,9 +269,15 @@ law_result run_property(const law_info& info, std::string_view tier, int digits,
     } catch (const rc::detail::CaseResult& r) {
       if (r.type == rc::detail::CaseResult::Type::Failure) rec.freeze();
       throw;
+    } catch (const std::exception& e) {
+      rec.freeze();
+      throw rc::detail::CaseResult(rc::detail::CaseResult::Type::Failure,
+                                   std::string(exception_marker) + e.what());
     } catch (...) {
       rec.freeze();
-      throw;
+      throw rc::detail::CaseResult(rc::detail::CaseResult::Type::Failure,
+                                   std::string(exception_marker) +
+                                       "an object that is not a std::exception");
     }
     rec.end_case();
   };
@@ -227,13 +288,24 @@ law_result run_property(const law_info& info, std::string_view tier, int digits,
   metadata.id = info.id + "." + std::string(tier);
   metadata.description = info.title;
   const auto outcome = [&] {
-    const watchdog limit("law " + info.id + " [" + std::string(tier) + "] (seed " +
+    const std::string what = "law " + info.id + " [" + std::string(tier) + "] (seed " +
                              std::to_string(config.base_seed) + ", " +
-                             std::to_string(config.cases) + " cases)",
-                         config.time_limit_seconds);
+                             std::to_string(config.cases) + " cases)";
+    const watchdog limit(what, config.time_limit_seconds, [&] {
+      if (!config.on_timeout) return;
+      law_result r = empty_result(info, std::string(tier), digits, config);
+      r.outcome = run_outcome::timeout;
+      r.passed = false;
+      r.cases = rec.cases();
+      r.message = what + " exceeded its time limit of " +
+                  std::to_string(config.time_limit_seconds) +
+                  " s (MECHCHECK_LAW_TIMEOUT) and was stopped\nReproduce: " + r.reproduce;
+      config.on_timeout(r);
+    });
     return rc::detail::checkTestable(body, metadata, params);
   }();
   active_recorder() = previous;
+  active_domain_observer() = previous_observer;
   return make_result(info, std::string(tier), digits, config, outcome, rec);
 }
 

@@ -44,6 +44,8 @@ struct heavy_top {
     require_positive(i1, "heavy_top", "I1");
     require_positive(i3, "heavy_top", "I3");
     if (!is_finite(mgl)) throw non_finite_error("heavy_top: mgl = " + to_text(mgl));
+    // mgl > 0: the centre of mass above the pivot; < 0: hanging below it.
+    observe_sign(mgl, "heavy_top", "mgl");
   }
 
   /// Eq 229, as a Lagrangian L(q, qdot, t) for the machinery of lagrangian.hpp.
@@ -192,6 +194,8 @@ struct heavy_top {
       throw non_finite_error("heavy_top::steady_precession_rates: theta = " + to_text(theta) +
                              ", Omega_3 = " + to_text(omega3));
     const T ct = cos(theta);
+    observe_sign(ct, "heavy_top::steady_precession_rates", "cos theta");
+    observe_sign(omega3, "heavy_top::steady_precession_rates", "Omega_3");
     if (ct == 0 || sin(theta) == 0)
       throw domain_error("heavy_top::steady_precession_rates: theta = " + to_text(theta) +
                          " leaves eq 232 without two roots");
@@ -221,6 +225,10 @@ struct heavy_top {
                              to_text(theta0) + ", phidot0 = " + to_text(phidot0) +
                              ", Omega_3 = " + to_text(omega3));
     if (mgl == 0) throw domain_error("heavy_top::nutation_from_turning_point: mgl = 0");
+    observe_sign(mgl, "heavy_top::nutation_from_turning_point", "mgl");
+    observe_sign(T(cos(theta0)), "heavy_top::nutation_from_turning_point", "cos theta0");
+    observe_sign(phidot0, "heavy_top::nutation_from_turning_point", "phidot0");
+    observe_sign(omega3, "heavy_top::nutation_from_turning_point", "Omega_3");
     const T u0 = cos(theta0), s2 = 1 - u0 * u0;
     if (!(s2 > 0) || sin(theta0) == 0)
       throw domain_error("heavy_top::nutation_from_turning_point: theta0 = " + to_text(theta0) +

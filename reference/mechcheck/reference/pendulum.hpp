@@ -33,6 +33,8 @@ class pendulum_motion {
     if (!is_finite(theta0) || !is_finite(p0))
       throw non_finite_error("pendulum_motion: state theta0 = " + to_text(theta0) +
                              ", p0 = " + to_text(p0));
+    observe_sign(theta0, "pendulum_motion", "theta0");
+    observe_sign(p0, "pendulum_motion", "p0");
     using std::atan2;
     using std::sin;
     using std::sqrt;

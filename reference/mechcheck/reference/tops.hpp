@@ -84,6 +84,10 @@ vector3<T> asymmetric_top_angular_velocity(const vector3<T>& moments, const vect
       throw non_finite_error("asymmetric_top_angular_velocity: I = " + to_text(moments) +
                              ", Omega(0) = " + to_text(omega0));
   if (!is_finite(t)) throw non_finite_error("asymmetric_top_angular_velocity: t = " + to_text(t));
+  observe_sign(omega0(0), "asymmetric_top_angular_velocity", "Omega_1(0)");
+  observe_sign(omega0(1), "asymmetric_top_angular_velocity", "Omega_2(0)");
+  observe_sign(omega0(2), "asymmetric_top_angular_velocity", "Omega_3(0)");
+  observe_sign(t, "asymmetric_top_angular_velocity", "t");
   vector3<T> m = moments.cwiseProduct(omega0);
   const T m2 = m.squaredNorm();
   const T two_e = omega0.dot(m);

@@ -30,6 +30,9 @@ std::pair<T, T> twist_flow(const T& q0, const T& p0, const T& t) {
   if (!is_finite(q0) || !is_finite(p0) || !is_finite(t))
     throw non_finite_error("twist_flow: q0 = " + to_text(q0) + ", p0 = " + to_text(p0) +
                            ", t = " + to_text(t));
+  observe_sign(q0, "twist_flow", "q0");
+  observe_sign(p0, "twist_flow", "p0");
+  observe_sign(t, "twist_flow", "t");
   const T w = q0 * q0 + p0 * p0;
   const T c = cos(T(w * t)), s = sin(T(w * t));
   return {T(q0 * c + p0 * s), T(p0 * c - q0 * s)};
