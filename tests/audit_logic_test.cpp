@@ -1,0 +1,570 @@
+// The audit's logic against inputs whose answers are known exactly: halving studies of
+// constructed error sequences (pre-asymptotic terms, a rounding floor, a stall), growth
+// classes of constructed energy errors, the symplectic defect of known linear maps, the
+// evaluation count of every stepper, and the verdict table.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "mechcheck/audit/audit.hpp"
+#include "mechcheck/audit/builtin.hpp"
+#include "mechcheck/audit/odeint.hpp"
+
+namespace audit_logic {
+using namespace mechcheck;
+namespace audit = mechcheck::audit;
+using outcome = audit::verdict::outcome;
+
+// --- halving studies of constructed errors ------------------------------------------------
+
+/// A study of runs n = 4, 8, ..., up to max_steps over t = 1 (h = 1/n) whose error and
+/// change come from `model(h)`, with one evaluation a step (the floor eps sqrt(n)).
+struct synthetic {
+  std::function<double(double)> error;                 // e(h)
+  std::function<double(double)> change;                // |x(h) - x(2h)|, or null: e(2h) - e(h)
+  long max_steps = 1 << 16;
+  double eps = 0x1p-52;
+
+  audit::order_study run() const {
+    std::optional<double> previous;
+    const auto one = [&](long n) {
+      audit::study_run r;
+      const double h = 1.0 / double(n);
+      r.error = error(h);
+      r.evaluations = double(n);
+      if (previous) r.change = change ? change(h) : std::abs(error(2 * h) - r.error);
+      previous = r.error;
+      return r;
+    };
+    return audit::halving_study(one, 4, max_steps, eps, [](long n) { return 1.0 / double(n); });
+  }
+};
+
+/// The exponent log2(e(h)/e(h/2)) of the model at h.
+double exact_exponent(const std::function<double(double)>& e, double h) {
+  return std::log2(e(h) / e(h / 2));
+}
+
+/// The median of the exact exponents of the last three halvings whose errors both exceed
+/// `resolvable`, over h = 1/4, 1/8, ... while e(h) stays at or above `stop`.
+double expected_fit(const std::function<double(double)>& e, double resolvable, long max_steps) {
+  std::vector<double> ex;
+  for (long n = 4; 2 * n <= max_steps; n *= 2) {
+    const double h = 1.0 / double(n);
+    if (e(h) > resolvable && e(h / 2) > resolvable && e(h) < 0.1) ex.push_back(exact_exponent(e, h));
+  }
+  std::vector<double> last(ex.end() - 3, ex.end());
+  std::sort(last.begin(), last.end());
+  return last[1];
+}
+
+TEST(audit_studies, a_pure_power_law_fits_its_exponent_exactly) {
+  synthetic s;
+  s.error = [](double h) { return 0.01 * std::pow(h, 4); };
+  s.max_steps = 1 << 10;  // the error stays far above the floor: the study runs to the end
+  s.error = [](double h) { return std::pow(h, 4); };  // 1e-12 at n = 1024: 140 floors
+  const auto study = s.run();
+  ASSERT_EQ(study.points.size(), 9u);  // n = 4 .. 1024
+  EXPECT_NEAR(study.fit.value, 4.0, 1e-12);
+  EXPECT_EQ(study.fit.used, 3);
+  EXPECT_NEAR(study.fit.spread, 0.0, 1e-12);
+  EXPECT_FALSE(study.fit.floor_h);
+  EXPECT_FALSE(study.stalled);
+}
+
+TEST(audit_studies, pre_asymptotic_terms_leave_the_last_three_halvings) {
+  // e = h^3 (1 + 40 h): local exponents 3 + log2((1 + 40 h)/(1 + 20 h)) fall towards 3
+  // (3.78 at h = 1/8, 3.03 at h = 1/1024); above 1/10 (h = 1/4) the run is not convergent.
+  synthetic s;
+  s.error = [](double h) { return std::pow(h, 3) * (1 + 40 * h); };
+  s.max_steps = 1 << 12;
+  const auto study = s.run();
+  ASSERT_EQ(study.points.size(), 11u);  // n = 4 .. 4096, all above the floor
+  // The last three halvings start at h = 1/512, 1/1024, 1/2048: the median is the middle.
+  EXPECT_NEAR(study.fit.value, exact_exponent(s.error, 1.0 / 1024), 1e-12);
+  EXPECT_NEAR(study.fit.value, expected_fit(s.error, 0, s.max_steps), 1e-12);
+  EXPECT_NEAR(study.fit.spread,
+              exact_exponent(s.error, 1.0 / 512) - exact_exponent(s.error, 1.0 / 2048), 1e-12);
+  EXPECT_NEAR(study.fit.value, 3.0, 0.03);
+  EXPECT_GT(exact_exponent(s.error, 1.0 / 8), 3.7);  // what a fit over early halvings gives
+}
+
+TEST(audit_studies, the_fit_stops_at_the_rounding_floor_model) {
+  // e = 10^-3 h^4 plus rounding noise of 3 floors (eps sqrt(n), with a deterministic factor
+  // in [1/2, 2]): halvings enter while both errors exceed 100 floors (at the finest run).
+  const double eps = 0x1p-52;
+  synthetic s;
+  s.error = [eps](double h) {
+    const double n = 1 / h;
+    const double noise = 3 * eps * std::sqrt(n) * (1.25 + 0.75 * std::sin(7 * std::log2(n)));
+    return 1e-3 * std::pow(h, 4) + noise;
+  };
+  const auto study = s.run();
+  // The study ends at the first run within 100 floors of its own floor.
+  const auto& last = study.points.back();
+  EXPECT_LT(last.error, audit::floor_margin * audit::rounding_floor(eps, last.evaluations));
+  for (std::size_t i = 0; i + 1 < study.points.size(); ++i)
+    EXPECT_GE(study.points[i].error,
+              audit::floor_margin * audit::rounding_floor(eps, study.points[i].evaluations));
+  // resolvable = 100 floors of the finest run: the fit is the exact exponents' median there.
+  const double resolvable = audit::floor_margin * audit::rounding_floor(eps, last.evaluations);
+  EXPECT_NEAR(study.fit.value, expected_fit(s.error, resolvable, long(1 / last.h)), 1e-12);
+  EXPECT_NEAR(study.fit.value, 4.0, 0.05);
+  ASSERT_TRUE(study.fit.floor_h);
+  EXPECT_EQ(*study.fit.floor_h, last.h);
+  EXPECT_FALSE(study.stalled) << "a floor is not a stall: the runs differ as much as they err";
+}
+
+TEST(audit_studies, an_error_that_converges_to_a_wrong_limit_is_a_stall) {
+  // Runs converge to a limit S = 1e-11 away from the solution (orthogonal to the
+  // truncation error C h^3): e = sqrt((C h^3)^2 + S^2), runs differ by C (2h)^3 - C h^3.
+  const double c = 1e-2, limit = 1e-11;
+  synthetic s;
+  s.error = [=](double h) { return std::hypot(c * std::pow(h, 3), limit); };
+  s.change = [=](double h) { return 7 * c * std::pow(h, 3); };
+  const auto study = s.run();
+  ASSERT_TRUE(study.stalled);
+  const auto& st = *study.stalled;
+  EXPECT_EQ(st.h, 1.0 / 65536);
+  EXPECT_NEAR(st.error, limit, 1e-3 * limit);
+  EXPECT_NEAR(st.change, 7 * c * std::pow(st.h, 3), 1e-30);
+  EXPECT_NEAR(st.floor, 0x1p-52 * 256, 1e-30);
+  EXPECT_NEAR(st.margin, st.error / st.floor, 1e-9);
+  // Remove the stall (S = 0): the same study converges, no stall.
+  synthetic ok = s;
+  ok.error = [=](double h) { return c * std::pow(h, 3); };
+  EXPECT_FALSE(ok.run().stalled);
+  // A stall below the floor margin is rounding, not a stall: S = 10 floors at the end.
+  synthetic low = s;
+  low.error = [=](double h) { return std::hypot(c * std::pow(h, 3), 10 * 0x1p-52 * 256); };
+  EXPECT_FALSE(low.run().stalled);
+  // Runs that still disagree (change >= error / 8) are converging, not stalled.
+  synthetic moving = s;
+  moving.change = [=](double h) { return s.error(h) / 7; };
+  EXPECT_FALSE(moving.run().stalled);
+}
+
+TEST(audit_studies, failed_and_diverged_runs_are_skipped_with_a_note) {
+  synthetic s;
+  s.error = [](double h) { return h > 0.1 ? NAN : 1e-3 * h * h; };
+  s.max_steps = 1 << 10;
+  const auto study = s.run();
+  EXPECT_EQ(study.points.front().h, 1.0 / 16);  // 1/4 and 1/8 diverged
+  EXPECT_NE(study.note.find("not finite"), std::string::npos) << study.note;
+  EXPECT_NEAR(study.fit.value, 2.0, 1e-12);
+  const auto failing = audit::halving_study(
+      [](long n) {
+        audit::study_run r;
+        r.ok = n > 8;
+        r.note = "threw";
+        r.error = 1.0 / double(n * n);
+        r.evaluations = double(n);
+        return r;
+      },
+      4, 64, 0x1p-52, [](long n) { return 1.0 / double(n); });
+  EXPECT_EQ(failing.points.size(), 3u);
+  EXPECT_EQ(failing.note, "threw");
+}
+
+TEST(audit_studies, fit_halvings_uses_the_median_of_the_last_three_resolvable) {
+  const std::vector<audit::study_point> pts{
+      {1, 1, 0}, {0.5, 0.25, 0}, {0.25, 1.0 / 32, 0}, {0.125, 1.0 / 512, 0}, {0.0625, 1e-300, 0}};
+  const auto f = audit::fit_halvings(pts, 1e-10);  // exponents 2, 3, 4; the last at the floor
+  EXPECT_EQ(f.used, 3);
+  EXPECT_DOUBLE_EQ(f.value, 3);
+  EXPECT_DOUBLE_EQ(f.spread, 2);
+  ASSERT_TRUE(f.floor_h);
+  EXPECT_EQ(*f.floor_h, 0.0625);
+  const auto two = audit::fit_halvings({pts.begin(), pts.begin() + 3}, 1e-10);
+  EXPECT_EQ(two.used, 2);
+  EXPECT_DOUBLE_EQ(two.value, 2.5);  // two exponents: their mean
+  EXPECT_EQ(audit::fit_halvings({pts[4]}, 1e-10).used, 0);
+}
+
+// --- growth classes of constructed energy errors ------------------------------------------
+
+/// The growth exponent growth_recorder fits to e(n), n = 1..2^17.
+double recorded_growth(const std::function<double(long)>& e) {
+  audit::growth_recorder g;
+  for (long n = 1; n <= (1L << 17); ++n) g.add(n, e(n));
+  return g.exponent().value();
+}
+
+TEST(audit_growth, powers_of_t_give_their_exponent_and_class) {
+  // For e = a n^g the window RMS over [2^w, 2^(w+1)) is a 2^(w g) c_g (1 + O(2^-w)): from
+  // window 6 on the fitted slope is g to within 2^-6 / ln 2 ~ 0.02.
+  const double band = 0.02;
+  EXPECT_NEAR(recorded_growth([](long) { return 1e-12; }), 0, band);
+  EXPECT_NEAR(recorded_growth([](long n) { return 1e-12 * (2 + std::sin(0.1 * double(n))); }), 0,
+              band);
+  EXPECT_NEAR(recorded_growth([](long n) { return 1e-15 * std::sqrt(double(n)); }), 0.5, band);
+  EXPECT_NEAR(recorded_growth([](long n) { return 1e-15 * double(n); }), 1, band);
+  EXPECT_NEAR(recorded_growth([](long n) { return 1e-18 * double(n) * double(n); }), 2, band);
+  EXPECT_EQ(audit::growth_kind(0.0), "bounded");
+  EXPECT_EQ(audit::growth_kind(0.2499), "bounded");
+  EXPECT_EQ(audit::growth_kind(0.25), "random walk");
+  EXPECT_EQ(audit::growth_kind(0.7499), "random walk");
+  EXPECT_EQ(audit::growth_kind(0.75), "linear drift");
+  EXPECT_EQ(audit::growth_kind(1.4999), "linear drift");
+  EXPECT_EQ(audit::growth_kind(1.5), "faster than linear");
+}
+
+TEST(audit_growth, a_random_walk_has_increments_growing_as_the_root_of_the_lag) {
+  // growth_of_increments over lags 4..1024 of 2^17 values: the exponent's spread over 40
+  // Kepler orbits was 0.008 (studies.hpp); over 20 independent walks here its mean must be
+  // 1/2 within 4 sigma / sqrt(20) and every walk within 4 sigma = 0.032.
+  double sum = 0;
+  for (int seed = 1; seed <= 20; ++seed) {
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> step(0, 1e-16);
+    std::vector<double> e(1 << 17);
+    double x = 0;
+    for (auto& v : e) v = (x += step(rng));
+    const double g = audit::growth_of_increments(e, 2, 10).exponent;
+    EXPECT_NEAR(g, 0.5, 0.032) << "seed " << seed;
+    sum += g;
+  }
+  EXPECT_NEAR(sum / 20, 0.5, 4 * 0.008 / std::sqrt(20.0));
+  // Bounded noise: flat increments; a drift: lag^1.
+  std::vector<double> noise(1 << 17), drift(1 << 17);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1e-15, 1e-15);
+  for (std::size_t i = 0; i < noise.size(); ++i) {
+    noise[i] = u(rng);
+    drift[i] = 1e-16 * double(i) + u(rng) * 1e-3;
+  }
+  EXPECT_NEAR(audit::growth_of_increments(noise, 2, 10).exponent, 0, 0.032);
+  EXPECT_NEAR(audit::growth_of_increments(drift, 2, 10).exponent, 1, 0.032);
+}
+
+/// The exact flow of the oscillator of reference_problems (a rotation by h of (q, p)),
+/// then (q, p) scaled so that the energy follows E0 (1 + target(n)) after step n.
+template <class System, class Vec>
+struct energy_follower {
+  System system;
+  std::shared_ptr<long> steps = std::make_shared<long>(0);
+  std::function<double(long)> target;
+  void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) const {
+    using S = typename Vec::Scalar;
+    using std::cos;
+    using std::sin;
+    Vec dq = x.q, dp = x.p;
+    system.vector_field(x.q, x.p, dq, dp);  // counted: one evaluation a step
+    const S c = cos(h), s = sin(h);
+    const Vec q = c * x.q + s * x.p, p = c * x.p - s * x.q;
+    const long n = ++*steps;
+    const double f = std::sqrt((1 + target(n)) / (1 + target(n - 1)));
+    x.q = S(f) * q;
+    x.p = S(f) * p;
+  }
+};
+
+audit::long_run long_run_of(std::function<double(long)> target) {
+  audit::stepper_under_audit<double> s;
+  s.name = "energy follower";
+  s.make = [target](const audit::erased_system<double>& sys) -> audit::step_function<double> {
+    using follower = energy_follower<audit::erased_system<double>, dynamic_vector<double>>;
+    auto st = std::make_shared<follower>(follower{sys, std::make_shared<long>(0), target});
+    return [st](audit::state<double>& x, const double& h) { (*st)(x, h); };
+  };
+  audit::audit_options opt;
+  opt.problems = {"oscillator"};
+  opt.long_run_problems = {"oscillator"};
+  opt.long_run_steps = 1 << 17;
+  opt.timing = false;
+  const auto a = audit::audit_stepper(s, opt);
+  return a.problems.front().run.value();
+}
+
+TEST(audit_growth, the_long_run_names_the_class_of_a_constructed_energy_error) {
+  const auto energy = [](const audit::long_run& r) { return r.invariants.front(); };
+  const auto exact = energy(long_run_of([](long) { return 0.0; }));
+  EXPECT_EQ(exact.kind, "preserved to rounding") << exact.max_relative;
+  const auto bounded = energy(long_run_of([](long n) { return 1e-9 * std::sin(0.01 * double(n)); }));
+  EXPECT_EQ(bounded.kind, "bounded");
+  EXPECT_NEAR(*bounded.exponent, 0, 0.1);
+  const auto walk = energy(long_run_of([](long n) { return 1e-12 * std::sqrt(double(n)); }));
+  EXPECT_EQ(walk.kind, "random walk");
+  EXPECT_NEAR(*walk.exponent, 0.5, 0.02);
+  const auto drift = energy(long_run_of([](long n) { return 1e-12 * double(n); }));
+  EXPECT_EQ(drift.kind, "linear drift");
+  EXPECT_NEAR(*drift.exponent, 1, 0.02);
+  const auto fast = energy(long_run_of([](long n) { return 1e-17 * double(n) * double(n); }));
+  EXPECT_EQ(fast.kind, "faster than linear");
+  EXPECT_NEAR(*fast.exponent, 2, 0.02);
+  const auto lost = energy(long_run_of([](long n) { return n > 1000 ? 0.5 : 0.0; }));
+  EXPECT_EQ(lost.kind, "lost (error of order one)");
+}
+
+// --- the symplectic defect of known linear maps ---------------------------------------------
+
+TEST(audit_symplectic, the_defect_of_a_perturbed_block_is_what_algebra_says) {
+  // M = S + d E_ij with S symplectic (a rotation in each (q_k, p_k) plane): M J M^T - J =
+  // d (E_ij J S^T + S J E_ji) + d^2 E_ij J E_ji, whose largest entry is known for each
+  // placement of (i, j) in the blocks q-q, q-p, p-q and p-p.
+  const Eigen::Index n = 2;
+  const dynamic_matrix<double> j = audit::symplectic_form<double>(n);
+  dynamic_matrix<double> s = dynamic_matrix<double>::Identity(4, 4);
+  EXPECT_EQ(audit::symplectic_defect(s), 0);
+  const double c = std::cos(0.3), sn = std::sin(0.3);
+  s(0, 0) = c, s(0, 2) = sn, s(2, 0) = -sn, s(2, 2) = c;
+  EXPECT_LT(audit::symplectic_defect(s), 4 * 0x1p-52);
+  const double d = 1.0 / 1024;  // exact products
+  // (Each placement couples what a symplectic map cannot: a shear q1 += d p1 alone, E_13,
+  // would be symplectic.)
+  for (const auto& [i, jj, block] : std::vector<std::tuple<int, int, const char*>>{
+           {0, 1, "q-q"}, {0, 3, "q-p"}, {3, 0, "p-q"}, {2, 3, "p-p"}, {1, 1, "q-q diagonal"}}) {
+    dynamic_matrix<double> e = dynamic_matrix<double>::Zero(4, 4);
+    e(i, jj) = 1;
+    const dynamic_matrix<double> m = s + d * e;
+    const dynamic_matrix<double> expected =
+        d * (e * j * s.transpose() + s * j * e.transpose()) + d * d * e * j * e.transpose();
+    EXPECT_NEAR(audit::symplectic_defect(m), expected.cwiseAbs().maxCoeff(), 4 * 0x1p-52) << block;
+    EXPECT_GT(audit::symplectic_defect(m), 0.5 * d) << block;
+  }
+  // A uniform scaling by (1 + d) in one degree of freedom: area (1 + d)^2, defect 2d + d^2.
+  dynamic_matrix<double> scale = dynamic_matrix<double>::Identity(4, 4);
+  scale(1, 1) = scale(3, 3) = 1 + d;
+  EXPECT_DOUBLE_EQ(audit::symplectic_defect(scale), 2 * d + d * d);
+}
+
+TEST(audit_symplectic, the_step_jacobian_by_ad_of_a_linear_map_is_the_map) {
+  dynamic_matrix<double> m(2, 2);
+  m << 1.25, 0.5, -0.75, 0.5;  // det 1: symplectic in one degree of freedom
+  const auto make = [&m]<class S>() {
+    return [m](phase_state<dynamic_vector<S>>& x, const S&) {
+      const S q = x.q(0), p = x.p(0);
+      x.q(0) = lift<S>(m(0, 0)) * q + lift<S>(m(0, 1)) * p;
+      x.p(0) = lift<S>(m(1, 0)) * q + lift<S>(m(1, 1)) * p;
+    };
+  };
+  dynamic_vector<double> z(2);
+  z << 0.3, -0.2;
+  const dynamic_matrix<double> jac = audit::step_jacobian_of(make, z, 0.1, 1);
+  EXPECT_EQ(jac, m);
+  EXPECT_EQ(audit::symplectic_defect(jac), 0);
+}
+
+// --- evaluations per step -------------------------------------------------------------------
+
+/// Force or vector-field evaluations of steps 1, 2 and 3 of a stepper on a problem (-1: the
+/// stepper refuses the problem).
+std::vector<long long> evaluations(const audit::stepper_under_audit<double>& s,
+                                   const audit::problem<double>& pr) {
+  std::vector<long long> out;
+  try {
+    auto step = s.make(pr.system);
+    audit::state<double> x = pr.initial;
+    for (int k = 0; k < 3; ++k) {
+      pr.system.reset_evaluations();
+      step(x, pr.h_local / 4);
+      out.push_back(pr.system.evaluations());
+    }
+  } catch (const std::exception& e) {
+    if (!audit::detail::is_not_separable(e)) throw;
+    return {-1, -1, -1};
+  }
+  return out;
+}
+
+TEST(audit_evaluations, every_stepper_takes_the_evaluations_its_method_defines) {
+  // First step, then each later one. Splitting methods keep the last force (first same as
+  // last): Verlet 2 then 1, a composition of m Verlet steps m + 1 then m; McLachlan's SB3A
+  // has drifts outermost: 5 kicks every step. On the non-separable twist they refuse (-1).
+  const std::map<std::string, std::pair<std::vector<long long>, std::vector<long long>>> expected{
+      {"mechcheck::explicit_euler", {{1, 1, 1}, {1, 1, 1}}},
+      {"mechcheck::symplectic_euler", {{1, 1, 1}, {-1, -1, -1}}},
+      {"mechcheck::stormer_verlet", {{2, 1, 1}, {-1, -1, -1}}},
+      {"mechcheck::rk4", {{4, 4, 4}, {4, 4, 4}}},
+      {"mechcheck::composition4", {{4, 3, 3}, {-1, -1, -1}}},
+      {"mechcheck::composition6", {{10, 9, 9}, {-1, -1, -1}}},
+      {"mechcheck::composition8", {{28, 27, 27}, {-1, -1, -1}}},
+      {"mechcheck::mclachlan4", {{5, 5, 5}, {-1, -1, -1}}},
+      // Odeint: dopri5 is FSAL (7 stages, the first from the last step after the first);
+      // modified_midpoint with its default 2 sub-steps takes 3; velocity_verlet keeps its
+      // acceleration; symplectic_rkn_sb3a_mclachlan evaluates all 6 stages (its last
+      // coefficient is 0), the m4 variant 5.
+      {"odeint::euler", {{1, 1, 1}, {1, 1, 1}}},
+      {"odeint::runge_kutta4", {{4, 4, 4}, {4, 4, 4}}},
+      {"odeint::runge_kutta_cash_karp54", {{6, 6, 6}, {6, 6, 6}}},
+      {"odeint::runge_kutta_dopri5", {{7, 6, 6}, {7, 6, 6}}},
+      {"odeint::modified_midpoint", {{3, 3, 3}, {3, 3, 3}}},
+      {"odeint::velocity_verlet", {{2, 1, 1}, {-1, -1, -1}}},
+      {"odeint::symplectic_euler", {{1, 1, 1}, {-1, -1, -1}}},
+      {"odeint::symplectic_rkn_sb3a_mclachlan", {{6, 6, 6}, {-1, -1, -1}}},
+      {"odeint::symplectic_rkn_sb3a_m4_mclachlan", {{5, 5, 5}, {-1, -1, -1}}},
+  };
+  const auto problems = audit::reference_problems<double>();
+  const auto& separable = problems[0];      // oscillator
+  const auto& non_separable = problems[5];  // twist
+  ASSERT_EQ(non_separable.name, "twist");
+  auto steppers = audit::builtin_steppers<double>();
+  for (auto& s : audit::odeint::all_steppers<double>()) steppers.push_back(s);
+  int checked = 0;
+  for (const auto& s : steppers) {
+    const auto a = evaluations(s, separable), b = evaluations(s, non_separable);
+    if (s.name.find("gauss_legendre") != std::string::npos) {
+      // Implicit: each sweep of the stage iteration evaluates every stage, so a step costs
+      // a multiple of the stages, at least two sweeps (one to converge, one past it), and
+      // the first step one more (f(y0) starts its stages).
+      const int stages = s.name.back() - '0';
+      for (const auto& run : {a, b})
+        for (std::size_t k = 0; k < 3; ++k) {
+          EXPECT_EQ(run[k] % stages, k == 0 ? 1 % stages : 0) << s.name << ": " << run[k];
+          EXPECT_GE(run[k], 2 * stages) << s.name;
+        }
+      ++checked;
+      continue;
+    }
+    const auto it = expected.find(s.name);
+    ASSERT_NE(it, expected.end()) << s.name << " has no expected count";
+    EXPECT_EQ(a, it->second.first) << s.name << " on the oscillator";
+    EXPECT_EQ(b, it->second.second) << s.name << " on the twist";
+    ++checked;
+  }
+  EXPECT_EQ(checked, static_cast<int>(steppers.size()));
+  EXPECT_EQ(checked, 21);
+}
+
+TEST(audit_evaluations, gauss_legendre_counts_what_its_system_sees) {
+  // The stepper's own count (sweeps x stages) equals the evaluations the system counted.
+  const auto pr = audit::kepler_problem<double>(0.5, "kepler");
+  gauss_legendre<audit::erased_system<double>, dynamic_vector<double>, 3> step{pr.system};
+  audit::state<double> x = pr.initial;
+  pr.system.reset_evaluations();
+  for (int k = 0; k < 10; ++k) step(x, pr.h_local);
+  EXPECT_EQ(step.evaluations(), pr.system.evaluations());
+  // One evaluation starts the first step's stages; later steps start from the last step's
+  // collocation polynomial.
+  EXPECT_EQ(step.evaluations(), 1 + 3 * step.sweeps());
+}
+
+// --- the verdict table ----------------------------------------------------------------------
+
+/// A problem audit with a global fit (value, spread, halvings), a local fit, and optional
+/// stall and defects.
+audit::problem_audit problem_with(std::optional<std::tuple<double, double, int>> global,
+                                  std::optional<std::tuple<double, double, int>> local,
+                                  bool stalled = false) {
+  audit::problem_audit p;
+  p.problem = "synthetic";
+  if (global) {
+    p.global.fit.value = std::get<0>(*global);
+    p.global.fit.spread = std::get<1>(*global);
+    p.global.fit.used = std::get<2>(*global);
+  }
+  if (local) {
+    p.local.fit.value = std::get<0>(*local);
+    p.local.fit.spread = std::get<1>(*local);
+    p.local.fit.used = std::get<2>(*local);
+  }
+  if (stalled) p.global.stalled = audit::stall{1e-4, 1e-11, 1e-14, 1e-13, 100};
+  return p;
+}
+
+struct order_row {
+  const char* name;
+  std::optional<int> declared;
+  std::vector<audit::problem_audit> problems;
+  outcome expected;
+  const char* measured;
+};
+
+using fit = std::tuple<double, double, int>;
+
+class verdict_table : public ::testing::TestWithParam<order_row> {};
+
+TEST_P(verdict_table, order) {
+  const order_row& row = GetParam();
+  audit::claims c;
+  c.order = row.declared;
+  const auto v = audit::detail::judge(c, row.problems);
+  ASSERT_EQ(v.front().claim, "order");
+  EXPECT_EQ(v.front().result, row.expected) << v.front().evidence;
+  EXPECT_EQ(v.front().measured, row.measured) << v.front().evidence;
+}
+
+const order_row order_rows[] = {
+    // The declared order p = 4 against fits: confirmed within [p - 0.25, p + 0.75].
+    {"confirmed", 4, {problem_with(fit{4.0, 0.01, 3}, fit{5.0, 0.01, 3})}, outcome::confirmed, "4.00"},
+    {"global_just_above_band", 4, {problem_with(fit{3.76, 0.01, 3}, fit{5.0, 0.01, 3})}, outcome::confirmed, "3.76"},
+    {"global_below", 4, {problem_with(fit{3.74, 0.01, 3}, fit{5.0, 0.01, 3})}, outcome::contradicted, "3.74"},
+    {"local_below", 4, {problem_with(fit{4.0, 0.01, 3}, fit{4.74, 0.01, 3})}, outcome::contradicted, "4.00"},
+    {"local_just_above_band", 4, {problem_with(fit{4.0, 0.01, 3}, fit{4.76, 0.01, 3})}, outcome::confirmed, "4.00"},
+    // Unsettled fits (spread > 0.3 or a single halving) are reported, not judged.
+    {"unsettled_global_below", 4, {problem_with(fit{2.0, 0.31, 3}, fit{5.0, 0.01, 3})}, outcome::not_measured, "-"},
+    {"single_halving", 4, {problem_with(fit{2.0, 0.0, 1}, fit{5.0, 0.01, 3})}, outcome::not_measured, "-"},
+    {"settled_at_spread_0_3", 4, {problem_with(fit{2.0, 0.3, 2}, std::nullopt)}, outcome::contradicted, "2.00"},
+    // Worst case over problems: one problem below contradicts.
+    {"worst_problem", 4, {problem_with(fit{4.0, 0.0, 3}, fit{5.0, 0, 3}), problem_with(fit{3.0, 0.0, 3}, fit{4.0, 0, 3})}, outcome::contradicted, "3.00"},
+    // Higher than declared: every settled global above p + 0.75 and local above p + 1.75.
+    {"above_declared", 1, {problem_with(fit{2.0, 0.0, 3}, fit{3.0, 0, 3})}, outcome::contradicted, "2.00"},
+    {"above_globally_only", 1, {problem_with(fit{2.0, 0.0, 3}, fit{2.7, 0, 3})}, outcome::confirmed, "2.00"},
+    {"above_on_one_problem", 1, {problem_with(fit{2.0, 0.0, 3}, fit{3.0, 0, 3}), problem_with(fit{1.0, 0.0, 3}, fit{2.0, 0, 3})}, outcome::confirmed, "1.00"},
+    {"above_without_local", 1, {problem_with(fit{2.0, 0.0, 3}, std::nullopt)}, outcome::confirmed, "2.00"},
+    // A stall contradicts whatever the fits say (the fits end before it).
+    {"stall", 3, {problem_with(fit{3.0, 0.0, 3}, fit{4.0, 0, 3}, true)}, outcome::contradicted, "stalls"},
+    {"stall_without_fit", 3, {problem_with(std::nullopt, std::nullopt, true)}, outcome::contradicted, "stalls"},
+    // Nothing declared, nothing resolvable.
+    {"not_declared", std::nullopt, {problem_with(fit{4.0, 0.0, 3}, fit{5.0, 0, 3})}, outcome::not_declared, "4.00"},
+    {"nothing_resolved", 4, {problem_with(std::nullopt, std::nullopt)}, outcome::not_measured, "-"},
+    {"only_local", 4, {problem_with(std::nullopt, fit{5.0, 0.0, 3})}, outcome::not_measured, "-"},
+    {"only_local_below", 4, {problem_with(std::nullopt, fit{4.0, 0.0, 3})}, outcome::contradicted, "-"},
+};
+
+INSTANTIATE_TEST_SUITE_P(audit, verdict_table, ::testing::ValuesIn(order_rows),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+struct property_row {
+  const char* name;
+  std::optional<bool> declared;
+  std::vector<std::optional<bool>> within;  // per problem: the defect within its budget
+  outcome expected;
+};
+
+class property_table : public ::testing::TestWithParam<property_row> {};
+
+TEST_P(property_table, symplectic_and_symmetric) {
+  const property_row& row = GetParam();
+  std::vector<audit::problem_audit> ps;
+  for (const auto& w : row.within) {
+    audit::problem_audit p;
+    p.problem = "synthetic";
+    if (w) {
+      audit::defect_study d;
+      d.within_rounding = *w;
+      p.symplectic = d;
+      p.symmetric = d;
+    }
+    ps.push_back(p);
+  }
+  audit::claims c;
+  c.symplectic = row.declared;
+  c.symmetric = row.declared;
+  const auto v = audit::detail::judge(c, ps);
+  EXPECT_EQ(v[1].claim, "symplectic");
+  EXPECT_EQ(v[2].claim, "symmetric");
+  EXPECT_EQ(v[1].result, row.expected) << v[1].evidence;
+  EXPECT_EQ(v[2].result, row.expected) << v[2].evidence;
+}
+
+const property_row property_rows[] = {
+    {"claimed_and_within", true, {true, true}, outcome::confirmed},
+    {"claimed_and_one_over", true, {true, false}, outcome::contradicted},
+    {"denied_and_over", false, {false, true}, outcome::confirmed},
+    {"denied_but_within_everywhere", false, {true, true}, outcome::contradicted},
+    {"not_declared", std::nullopt, {true}, outcome::not_declared},
+    {"not_measured", true, {std::nullopt, std::nullopt}, outcome::not_measured},
+    {"measured_on_one", true, {std::nullopt, true}, outcome::confirmed},
+};
+
+INSTANTIATE_TEST_SUITE_P(audit, property_table, ::testing::ValuesIn(property_rows),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace audit_logic
