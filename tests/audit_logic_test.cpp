@@ -144,6 +144,15 @@ TEST(audit_studies, an_error_that_converges_to_a_wrong_limit_is_a_stall) {
   synthetic low = s;
   low.error = [=](double h) { return std::hypot(c * std::pow(h, 3), 10 * 0x1p-52 * 256); };
   EXPECT_FALSE(low.run().stalled);
+  // An error that stays put below 100 floors ends the study at the floor: no stall (the
+  // runs agree, but the limit is within the floor margin). 5e-14 is above 100 floors of
+  // the first run (n = 4) and below those of the second.
+  synthetic flat = s;
+  flat.error = [](double h) { return 5e-14 + 1e-10 * std::pow(h, 8); };
+  flat.change = [](double h) { return 1e-10 * 255 * std::pow(h, 8); };
+  const auto at_floor = flat.run();
+  EXPECT_EQ(at_floor.points.size(), 2u);
+  EXPECT_FALSE(at_floor.stalled);
   // Runs that still disagree (change >= error / 8) are converging, not stalled.
   synthetic moving = s;
   moving.change = [=](double h) { return s.error(h) / 7; };
@@ -185,6 +194,35 @@ TEST(audit_studies, fit_halvings_uses_the_median_of_the_last_three_resolvable) {
   EXPECT_EQ(two.used, 2);
   EXPECT_DOUBLE_EQ(two.value, 2.5);  // two exponents: their mean
   EXPECT_EQ(audit::fit_halvings({pts[4]}, 1e-10).used, 0);
+}
+
+TEST(audit_studies, the_local_study_stops_at_its_floor_of_16_eps_per_evaluation) {
+  // The oscillator's exact flow plus an error of exactly C h^5 along q_0, in a step of 16
+  // evaluations: the floor is 16 eps 16 = 256 eps. The study starts at 8 h_local = 4 and
+  // halves; C puts the error at h = 1/16 (six halvings) at 100 eps: below the floor, so
+  // the study ends there (one halving earlier it is 3200 eps).
+  const auto pr = audit::oscillator_problem<double>();
+  const double eps = 0x1p-52;
+  const double c = 100 * eps * pr.scale * std::pow(2.0, 20);
+  audit::stepper_under_audit<double> s;
+  s.name = "exact flow + C h^5";
+  s.make = [c](const audit::erased_system<double>& sys) -> audit::step_function<double> {
+    return [c, sys](audit::state<double>& x, const double& h) {
+      dynamic_vector<double> dq = x.q, dp = x.p;
+      for (int k = 0; k < 16; ++k) sys.vector_field(x.q, x.p, dq, dp);
+      const dynamic_vector<double> q = std::cos(h) * x.q + std::sin(h) * x.p;
+      const dynamic_vector<double> p = std::cos(h) * x.p - std::sin(h) * x.q;
+      x.q = q;
+      x.p = p;
+      x.q(0) += c * std::pow(h, 5);
+    };
+  };
+  const auto study = audit::detail::local_order(s, pr, audit::audit_options{});
+  ASSERT_EQ(study.points.size(), 7u);
+  EXPECT_EQ(study.points.back().h, 1.0 / 16);
+  EXPECT_NEAR(study.points.back().error, 100 * eps, 2 * eps);
+  EXPECT_EQ(study.points.back().evaluations, 16);
+  EXPECT_NEAR(study.fit.value, 5.0, 0.01);
 }
 
 // --- growth classes of constructed energy errors ------------------------------------------
@@ -243,25 +281,26 @@ TEST(audit_growth, a_random_walk_has_increments_growing_as_the_root_of_the_lag) 
   EXPECT_NEAR(audit::growth_of_increments(drift, 2, 10).exponent, 1, 0.032);
 }
 
-/// The exact flow of the oscillator of reference_problems (a rotation by h of (q, p)),
-/// then (q, p) scaled so that the energy follows E0 (1 + target(n)) after step n.
+/// The exact flow of the oscillator of reference_problems (a rotation of (q, p) by n h
+/// from the first state it saw), scaled so that the energy is E0 (1 + target(n)) after
+/// step n: the energy error is target(n) plus one rounding, whatever target's increments.
 template <class System, class Vec>
 struct energy_follower {
   System system;
   std::shared_ptr<long> steps = std::make_shared<long>(0);
   std::function<double(long)> target;
+  std::shared_ptr<phase_state<Vec>> first = std::make_shared<phase_state<Vec>>();
   void operator()(phase_state<Vec>& x, const typename Vec::Scalar& h) const {
     using S = typename Vec::Scalar;
     using std::cos;
     using std::sin;
     Vec dq = x.q, dp = x.p;
     system.vector_field(x.q, x.p, dq, dp);  // counted: one evaluation a step
-    const S c = cos(h), s = sin(h);
-    const Vec q = c * x.q + s * x.p, p = c * x.p - s * x.q;
+    if (*steps == 0) *first = x;
     const long n = ++*steps;
-    const double f = std::sqrt((1 + target(n)) / (1 + target(n - 1)));
-    x.q = S(f) * q;
-    x.p = S(f) * p;
+    const S c = cos(S(n) * h), s = sin(S(n) * h), f = std::sqrt(1 + target(n));
+    x.q = f * (c * first->q + s * first->p);
+    x.p = f * (c * first->p - s * first->q);
   }
 };
 
@@ -270,7 +309,8 @@ audit::long_run long_run_of(std::function<double(long)> target) {
   s.name = "energy follower";
   s.make = [target](const audit::erased_system<double>& sys) -> audit::step_function<double> {
     using follower = energy_follower<audit::erased_system<double>, dynamic_vector<double>>;
-    auto st = std::make_shared<follower>(follower{sys, std::make_shared<long>(0), target});
+    auto st = std::make_shared<follower>(follower{sys, std::make_shared<long>(0), target,
+                                                  std::make_shared<audit::state<double>>()});
     return [st](audit::state<double>& x, const double& h) { (*st)(x, h); };
   };
   audit::audit_options opt;
@@ -292,6 +332,11 @@ TEST(audit_growth, the_long_run_names_the_class_of_a_constructed_energy_error) {
   const auto walk = energy(long_run_of([](long n) { return 1e-12 * std::sqrt(double(n)); }));
   EXPECT_EQ(walk.kind, "random walk");
   EXPECT_NEAR(*walk.exponent, 0.5, 0.02);
+  // The rounding budget: 8 eps (evaluations + 1) sqrt(steps), one evaluation a step.
+  EXPECT_DOUBLE_EQ(walk.budget_relative, 8 * 0x1p-52 * 2 * std::sqrt(double(1 << 17)));
+  // A walk at ~3 budgets is not preserved to rounding.
+  const auto near = energy(long_run_of([](long n) { return 1e-14 * std::sqrt(double(n)); }));
+  EXPECT_EQ(near.kind, "random walk") << near.max_relative << " budget " << near.budget_relative;
   const auto drift = energy(long_run_of([](long n) { return 1e-12 * double(n); }));
   EXPECT_EQ(drift.kind, "linear drift");
   EXPECT_NEAR(*drift.exponent, 1, 0.02);

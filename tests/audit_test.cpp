@@ -162,6 +162,18 @@ TEST(Audit, ConfirmsStormerVerlet) {
   expect(a, "symplectic", outcome::confirmed);
   expect(a, "symmetric", outcome::confirmed);
   EXPECT_TRUE(a.claims_hold());
+  for (const auto& p : a.problems) {
+    // Rounding budgets: 16 (m + 1) 2n eps for the symplectic defect of a step of m = 2
+    // evaluations on n = 2 degrees of freedom, 16 (2m + 1) eps for the symmetry defect.
+    ASSERT_TRUE(p.symplectic && p.symmetric);
+    EXPECT_EQ(p.evaluations_per_step, 2) << p.problem;
+    EXPECT_EQ(p.symplectic->budget_eps, 16.0 * 3 * 4) << p.problem;
+    EXPECT_EQ(p.symmetric->budget_eps, 16.0 * 5) << p.problem;
+    // The local study stops at its floor 16 eps m: every run before the last is above it.
+    for (std::size_t i = 0; i + 1 < p.local.points.size(); ++i)
+      EXPECT_GE(p.local.points[i].error, 16 * 0x1p-52 * p.local.points[i].evaluations)
+          << p.problem << " h = " << p.local.points[i].h;
+  }
 }
 
 TEST(Audit, PerturbedWeightContradictsOrderAndSymmetry) {

@@ -234,6 +234,7 @@ TEST(harness_faults, a_hung_law_is_stopped_at_its_time_limit_with_its_name) {
   // through a pipe.
   int fds[2];
   ASSERT_EQ(::pipe(fds), 0);
+  const auto started = std::chrono::steady_clock::now();
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);
   if (child == 0) {
@@ -253,6 +254,8 @@ TEST(harness_faults, a_hung_law_is_stopped_at_its_time_limit_with_its_name) {
   ::waitpid(child, &status, 0);
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 124);
+  // Stopped at its limit of 1 s, not much later (a margin for a loaded machine).
+  EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(30));
   EXPECT_NE(err.find("law selftest.hangs [double] (seed 20261122, 100 cases) exceeded its time "
                      "limit of 1 s"),
             std::string::npos)

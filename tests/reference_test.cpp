@@ -74,3 +74,60 @@ TEST(oscillator_reference_errors, rejects_bad_parameters) {
   }
 }
 }  // namespace
+
+// --- the pendulum and the twist: start where they are started, follow the flow -------------
+
+namespace pendulum_reference_test {
+using namespace mechcheck;
+using T = mpfr50;
+
+/// (theta, p) after integrating H = p^2/(2 m l^2) - m g l cos(theta) to t with
+/// Gauss-Legendre 4 (order 8) in n steps.
+std::pair<T, T> integrated(const T& m, const T& l, const T& g, const T& theta0, const T& p0,
+                           const T& t, long n) {
+  const pendulum_system<T> sys(m, l, g);
+  gauss_legendre<pendulum_system<T>, dynamic_vector<T>, 4> step{sys};
+  phase_state<dynamic_vector<T>> x{dynamic_vector<T>(1), dynamic_vector<T>(1)};
+  x.q << theta0;
+  x.p << p0;
+  for (long i = 0; i < n; ++i) step(x, T(t / n));
+  return {x.q(0), x.p(0)};
+}
+
+TEST(pendulum_reference, starts_at_its_state_and_follows_the_flow_for_every_sign) {
+  const T m = T(3) / 2, l = T(5) / 4, g = T(2);
+  // Each quadrant of the start (theta0, p0), and the integrated motion at t = 7/4 (GL4,
+  // 256 steps: h^8 C ~ 1e-20 of the state), agreeing to 1e-18.
+  for (const auto& [theta0, p0] : std::vector<std::pair<T, T>>{
+           {T(1) / 2, T(1)}, {T(1) / 2, T(-1)}, {T(-1) / 2, T(1)}, {T(-1) / 2, T(-1)}, {T(1), T(0)}}) {
+    const reference::pendulum_motion<T> motion(m, l, g, theta0, p0);
+    const auto [theta, p] = motion.state_at(T(0));
+    EXPECT_TRUE(test::near_eps(theta, theta0, 64)) << theta0 << " " << p0;
+    EXPECT_TRUE(test::near_eps(T(p + 1), T(p0 + 1), 64)) << theta0 << " " << p0;
+    const T t = T(7) / 4;
+    const auto [ti, pi] = integrated(m, l, g, theta0, p0, t, 256);
+    const auto [tr, pr] = motion.state_at(t);
+    using std::abs;
+    EXPECT_LT(static_cast<double>(abs(T(ti - tr))), 1e-18) << theta0 << " " << p0;
+    EXPECT_LT(static_cast<double>(abs(T(pi - pr))), 1e-18) << theta0 << " " << p0;
+    // One period later, the start again.
+    const auto [tp, pp] = motion.state_at(motion.period());
+    EXPECT_LT(static_cast<double>(abs(T(tp - theta0))), 1e-45);
+    EXPECT_LT(static_cast<double>(abs(T(pp - p0))), 1e-45);
+  }
+}
+
+TEST(twist_reference, starts_at_its_state_and_turns_clockwise_at_rate_r2) {
+  // H = (q^2 + p^2)^2/4: qdot = r^2 p, pdot = -r^2 q: clockwise in the (q, p) plane.
+  const T q0 = T(1), p0 = T(1) / 2, dt = T(1) / 1024;
+  const auto [q1, p1] = reference::twist_flow(q0, p0, dt);
+  const T r2 = q0 * q0 + p0 * p0;
+  using std::abs;
+  // One small step: q1 - q0 = r^2 p0 dt + O(dt^2).
+  EXPECT_LT(static_cast<double>(abs(T((q1 - q0) / dt - r2 * p0))), 1e-2);
+  EXPECT_LT(static_cast<double>(abs(T((p1 - p0) / dt + r2 * q0))), 1e-2);
+  const auto [qs, ps] = reference::twist_flow(q0, p0, T(0));
+  EXPECT_EQ(qs, q0);
+  EXPECT_EQ(ps, p0);
+}
+}  // namespace pendulum_reference_test

@@ -30,6 +30,7 @@ struct erratum_287 {
   template <class T>
   static void property() {
     const double omega = *gen::positive();
+    RC_TAG(omega < 1 ? "omega < 1" : "omega >= 1");
     mc::dynamic_vector<T> z(4);
     z << T(*gen::dyadic(0.25, 2)), T(*gen::coordinate()), T(*gen::coordinate()),
         T(*gen::coordinate());

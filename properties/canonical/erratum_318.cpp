@@ -15,6 +15,7 @@ struct erratum_318 {
   template <class T>
   static void property() {
     const double theta = *gen::dyadic(-1.5, 1.5), action = *gen::dyadic(1.0 / 16, 2);
+    RC_TAG(theta < 0 ? "theta < 0" : "theta >= 0");
     using std::atan;
     using std::cos;
     using std::sin;

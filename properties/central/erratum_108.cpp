@@ -34,6 +34,7 @@ struct erratum_108 {
   template <class T>
   static void property() {
     const auto u = *gen::radial_potentials();
+    RC_TAG(std::to_string(u.terms.size()) + " terms");
     const double m = *gen::positive(), big_m = *gen::positive();
     const double r0 = *gen::dyadic(0.5, 2), rdot0 = *gen::coordinate();
     dynamic_vector<T> q(1), v(1);

@@ -21,6 +21,7 @@ struct erratum_13 {
     using std::cos;
     using std::sin;
     const T l = T(*gen::dyadic(1, 3));
+    RC_TAG(l < 2 ? "l < 2" : "l >= 2");
     dynamic_vector<T> s(2), rate(2), acc(2);  // (x, theta) and their first two derivatives
     s << T(*gen::dyadic_towards_zero(0.5)), T(*gen::coordinate());
     rate << T(*gen::coordinate()), T(*gen::coordinate());

@@ -168,6 +168,7 @@ void check_against_eq47(const std::string& what, Make&& make) {
   // The pivot's radius R in [0, 4]: R = 0 is the simple pendulum.
   const double m = *gen::positive(), l = *gen::positive(), g = *gen::positive(),
                r = *gen::dyadic(0, 4), w = *gen::coefficient();
+  RC_CLASSIFY(r == 0, "fixed pivot (R = 0)");
   dynamic_vector<T> q(1), v(1);
   q << T(*gen::coordinate());
   v << T(*gen::coordinate());

@@ -20,6 +20,7 @@ struct erratum_89 {
     using std::sqrt;
     const T m = T(*gen::positive()), k = T(*gen::positive()), amplitude = T(*gen::positive());
     const T xa = amplitude * T(*gen::dyadic(-0.75, 0)), xb = amplitude * T(*gen::dyadic(0, 0.75));
+    RC_CLASSIFY(xa == 0 || xb == 0, "an end at the centre");
     const T w = sqrt(T(k / m));
     const T time = (acos(T(xa / amplitude)) - acos(T(xb / amplitude))) / w;
     const auto printed_integrand = [&](const T& x) {

@@ -13,6 +13,7 @@ struct origin_shift {
   template <class T>
   static void property() {
     const auto s = *gen::particle_samples();
+    RC_TAG(std::to_string(s.particles()) + " particles");
     const auto a = *gen::directions();
     const auto q = s.template positions<T>();
     const auto v = s.template velocities<T>();

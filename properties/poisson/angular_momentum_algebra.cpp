@@ -13,6 +13,7 @@ struct angular_momentum_algebra {
   template <class T>
   static void property() {
     const auto x = (*gen::phase_points(3)).template at<T>();
+    RC_CLASSIFY(x.q().dot(x.p()) < 0, "q.p < 0");
     const T scale = x.q().norm() * x.p().norm();
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {

@@ -28,6 +28,7 @@ struct bilinearity {
   template <class T>
   static void property() {
     const int n = *gen::degrees_of_freedom();
+    RC_TAG("n = " + std::to_string(n));
     const auto f = *gen::smooth_functions(n);
     const auto g = *gen::smooth_functions(n);
     const auto h = *gen::smooth_functions(n);

@@ -12,6 +12,7 @@ struct energy_conservation {
   template <class T>
   static void property() {
     const int n = *gen::degrees_of_freedom();
+    RC_TAG("n = " + std::to_string(n));
     const auto hamiltonian = *gen::smooth_functions(n);
     const auto x = (*gen::phase_points(n)).template at<T>();
     const T g = grad_norm(hamiltonian, x);

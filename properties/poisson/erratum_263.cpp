@@ -15,6 +15,7 @@ struct erratum_263 {
   template <class T>
   static void property() {
     const int n = *gen::degrees_of_freedom();
+    RC_TAG("n = " + std::to_string(n));
     const auto hamiltonian = *gen::smooth_functions(n);
     const auto x = (*gen::phase_points(n)).template at<T>();
     const auto dh = mc::phase_gradient(hamiltonian, x, "erratum_263", "H").second;

@@ -12,6 +12,7 @@ struct m_squared_commutes {
   template <class T>
   static void property() {
     const auto x = (*gen::phase_points(3)).template at<T>();
+    RC_CLASSIFY(x.q().dot(x.p()) < 0, "q.p < 0");
     const T rp = x.q().norm() + x.p().norm();
     const T scale = x.q().norm() * x.p().norm() * rp * rp;
     for (int i = 0; i < 3; ++i)

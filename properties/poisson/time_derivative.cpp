@@ -15,6 +15,7 @@ struct time_derivative {
   template <class T>
   static void property() {
     const int n = *gen::degrees_of_freedom();
+    RC_TAG("n = " + std::to_string(n));
     const auto f = *gen::smooth_functions(n);
     const auto hamiltonian = *gen::smooth_functions(n);
     const auto x = (*gen::phase_points(n)).template at<T>();

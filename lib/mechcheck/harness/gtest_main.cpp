@@ -33,6 +33,11 @@ class law_test : public testing::Test {
         std::cout << "] " << n;
       }
     }
+    for (const auto& d : r.domains) {
+      if (d.regions.size() < 2) continue;
+      std::cout << "\n  " << d.where << " " << d.what << ":";
+      for (const auto& [region, n] : d.cases) std::cout << " " << region << " " << n;
+    }
     if (r.info.expect == expectation::falsified)
       std::cout << "\n  erratum (" << r.info.erratum << ") falsified by:\n" << r.counterexample;
     std::cout << std::endl;
