@@ -1,6 +1,8 @@
 #pragma once
-// The stepper families of mechcheck-audit (the library's and Odeint's), one translation
-// unit per tier (tier_double.cpp, tier_mpfr50.cpp: the two tiers build in parallel).
+// The stepper families of mechcheck-audit: the library's and Odeint's, one translation unit
+// per tier (tier_double.cpp, tier_mpfr50.cpp: the two tiers build in parallel), and those
+// of the third-party libraries found at configure time (family_gsl.cpp,
+// family_arkode.cpp).
 
 #include <string>
 #include <vector>
@@ -14,6 +16,9 @@ struct request {
   std::vector<std::string> patterns;  ///< shell patterns on stepper names; empty: all
   audit::audit_options options;
   bool list_only = false;  ///< only name the steppers (no audit)
+  /// The Newton tolerance of third-party implicit steppers (GSL's driver control, ARKODE's
+  /// SStolerances); 0: each adapter's default.
+  double newton_tolerance = 0;
 };
 
 /// What a family returns: the names it has (matching) and their audits.
@@ -26,5 +31,11 @@ family_result builtin_double(const request& r);
 family_result builtin_mpfr50(const request& r);
 family_result odeint_double(const request& r);
 family_result odeint_mpfr50(const request& r);
+/// GSL's one-step types (family_gsl.cpp; where GSL is found).
+family_result gsl_double(const request& r);
+/// ARKODE's tables run by ARKODE and through mechcheck's Runge-Kutta stepper
+/// (family_arkode.cpp; where SUNDIALS is found); in mpfr50 the latter only.
+family_result arkode_double(const request& r);
+family_result arkode_mpfr50(const request& r);
 
 }  // namespace mechcheck::audit_tool

@@ -53,6 +53,11 @@ int main(int argc, char** argv) {
                  "exit with status 2 when a claim of a stepper matching this pattern is "
                  "contradicted (e.g. 'mechcheck::*'; '*' for all)");
   app.add_flag("-q,--quiet", quiet, "no progress on stderr");
+  double newton_tolerance = 0;
+  app.add_option("--newton-tolerance", newton_tolerance,
+                 "Newton tolerance of third-party implicit steppers (GSL's driver control, "
+                 "ARKODE's SStolerances); default each adapter's own (1e-14)")
+      ->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);
 
   const auto start = clock_type::now();
@@ -62,6 +67,7 @@ int main(int argc, char** argv) {
   audit_tool::request request;
   request.patterns = steppers;
   request.list_only = list;
+  request.newton_tolerance = newton_tolerance;
   request.options.problems = problems;
   request.options.long_run_problems = long_run_problems;
   request.options.long_run_steps = long_run_steps;
@@ -76,11 +82,23 @@ int main(int argc, char** argv) {
   for (const auto& tier : tiers) {
     const double t0 = elapsed();
     request.options.long_run_steps = tier == "double" ? long_run_steps : long_run_steps_mpfr50;
-    const auto families = tier == "double"
-                              ? std::vector{audit_tool::builtin_double(request),
-                                            audit_tool::odeint_double(request)}
-                              : std::vector{audit_tool::builtin_mpfr50(request),
-                                            audit_tool::odeint_mpfr50(request)};
+    std::vector<audit_tool::family_result> families;
+    if (tier == "double") {
+      families.push_back(audit_tool::builtin_double(request));
+      families.push_back(audit_tool::odeint_double(request));
+#ifdef MECHCHECK_HAVE_GSL
+      families.push_back(audit_tool::gsl_double(request));
+#endif
+#ifdef MECHCHECK_HAVE_ARKODE
+      families.push_back(audit_tool::arkode_double(request));
+#endif
+    } else {
+      families.push_back(audit_tool::builtin_mpfr50(request));
+      families.push_back(audit_tool::odeint_mpfr50(request));
+#ifdef MECHCHECK_HAVE_ARKODE
+      families.push_back(audit_tool::arkode_mpfr50(request));
+#endif
+    }
     for (const auto& f : families) {
       for (const auto& n : f.names) names.push_back(n + " [" + tier + "]");
       audits.insert(audits.end(), f.audits.begin(), f.audits.end());

@@ -41,6 +41,7 @@
 #include <string>
 #include <vector>
 
+#include "mechcheck/audit/finite_differences.hpp"
 #include "mechcheck/audit/problems.hpp"
 #include "mechcheck/audit/result.hpp"
 #include "mechcheck/audit/studies.hpp"
@@ -62,6 +63,9 @@ struct stepper_under_audit {
   /// The same stepper on ad<T> scalars (for the symplectic condition); empty if the
   /// stepper cannot run on AD scalars.
   std::function<step_function<ad<T>>(const erased_system<T>&)> make_ad;
+  /// Without make_ad: take the step's Jacobian by finite differences (black boxes,
+  /// finite_differences.hpp), with the resolution their error model gives.
+  bool finite_differences = false;
 };
 
 namespace detail {
@@ -236,6 +240,78 @@ defect_study symplectic_condition(const stepper_under_audit<T>& s, const problem
     return {symplectic_defect(m), T(m.squaredNorm())};
   };
   return defect_of(pr, opt, defect, 16.0 * (evaluations_per_step + 1) * 2.0 * double(n));
+}
+
+/// The symplectic condition of a stepper that cannot run on AD scalars: M by finite
+/// differences (finite_differences.hpp; rounding of one step 4 (m + 1) eps |Z|), at
+/// h_local, h_local/2 and h_local/4. Its error E per entry bounds the defect's error by
+/// |E J M^T + M J E^T| <= 2 (2n) max|E| max|M|: the resolution. A defect above it at any of
+/// the three steps is followed down by halvings (as defect_of does) and its power of h
+/// fitted; below it at all three, "no defect above the resolution". For one degree of
+/// freedom det M - 1 is reported too (area preservation), with resolution 4 max|M| max|E|.
+template <class T>
+defect_study symplectic_condition_fd(const stepper_under_audit<T>& s, const problem<T>& pr,
+                                     const audit_options& opt, double evaluations_per_step) {
+  using std::abs;
+  const Eigen::Index n = pr.initial.q.size();
+  dynamic_vector<T> z(2 * n);
+  z << pr.initial.q, pr.initial.p;
+  struct measured {
+    double defect, resolution;  // relative to |M|^2
+    double det_minus_one = 0, det_resolution = 0;
+  };
+  const auto measure = [&](const T& h) {
+    const std::function<dynamic_vector<T>(const dynamic_vector<T>&)> map =
+        [&](const dynamic_vector<T>& w) {
+          state<T> x{dynamic_vector<T>(w.head(n)), dynamic_vector<T>(w.tail(n))};
+          auto step = s.make(pr.system);
+          step(x, h);
+          dynamic_vector<T> out(2 * n);
+          out << x.q, x.p;
+          return out;
+        };
+    const fd_jacobian<T> fd =
+        finite_difference_jacobian<T>(map, z, 4 * (evaluations_per_step + 1));
+    const double scale = to_double(T(fd.value.squaredNorm()));
+    const double m_max = to_double(T(fd.value.cwiseAbs().maxCoeff()));
+    const double e_max = fd.error.maxCoeff();
+    measured r;
+    r.defect = to_double(symplectic_defect(fd.value)) / scale;
+    r.resolution = 2.0 * double(2 * n) * e_max * m_max / scale;
+    if (n == 1) {
+      r.det_minus_one = to_double(T(fd.value.determinant() - 1));
+      r.det_resolution = 4 * m_max * e_max;
+    }
+    return r;
+  };
+  defect_study d;
+  T h = pr.h_local;
+  bool over = false;
+  for (int k = 0; k < 3; ++k, h /= 2) {
+    const measured m = measure(h);
+    if (k == 0 && n == 1) {
+      d.area_defect = m.det_minus_one;
+      d.area_resolution = m.det_resolution;
+    }
+    d.resolution = std::max(d.resolution, m.resolution);
+    d.worst_eps = std::max(d.worst_eps, m.defect / eps_of<T>());
+    d.worst_relative = std::max(d.worst_relative, m.defect);
+    d.points.push_back({to_double(h), m.defect, 0});
+    over = over || !(m.defect <= m.resolution);
+  }
+  d.budget_eps = d.resolution / eps_of<T>();
+  d.within_rounding = !over;
+  if (d.within_rounding) {
+    d.points.clear();
+    return d;
+  }
+  for (int k = 3; k <= opt.max_local_halvings; ++k, h /= 2) {
+    const measured m = measure(h);
+    d.points.push_back({to_double(h), m.defect, 0});
+    if (m.defect <= m.resolution) break;
+  }
+  d.exponent = fit_halvings(d.points, 4 * d.resolution);
+  return d;
 }
 
 /// |step(-h) step(h) x0 - x0| on the scale |x0|; budget 16 (2m + 1) eps.
@@ -421,7 +497,18 @@ inline std::vector<verdict> judge(const claims& declared, const std::vector<prob
       if (!p.skipped.empty() || !d) continue;
       any = true;
       all_within = all_within && d->within_rounding;
-      evidence += p.problem + ": " + sci(d->worst_eps) + " eps (budget " + sci(d->budget_eps) + ")";
+      if (d->resolution > 0) {
+        evidence += p.problem + ": " +
+                    (d->within_rounding ? "no defect above " + sci(d->resolution)
+                                        : "defect " + sci(d->worst_relative) +
+                                              " above the resolution " + sci(d->resolution)) +
+                    " (finite differences)";
+        if (d->area_defect)
+          evidence += ", det M - 1 = " + sci(*d->area_defect) + " (resolution " +
+                      sci(*d->area_resolution) + ")";
+      } else {
+        evidence += p.problem + ": " + sci(d->worst_eps) + " eps (budget " + sci(d->budget_eps) + ")";
+      }
       if (!d->within_rounding && d->exponent.used > 0)
         evidence += ", ~ h^" + fixed(d->exponent.value, 1);
       evidence += "; ";
@@ -491,13 +578,31 @@ stepper_audit audit_stepper(const stepper_under_audit<T>& s,
       out.problems.push_back(pa);
       continue;
     }
-    pa.global = detail::global_order(s, pr, opt);
-    pa.local = detail::local_order(s, pr, opt);
+    // A study whose step throws (a third-party error code, an implicit solve that fails,
+    // a backward step a method refuses) is recorded as a failure, never left to end the
+    // audit; its claim reads as not measured on this problem.
+    const auto guarded = [&pa](const char* what, auto&& study) {
+      try {
+        study();
+      } catch (const std::exception& e) {
+        pa.failures.push_back(std::string(what) + ": " + e.what());
+      }
+    };
+    guarded("global order", [&] { pa.global = detail::global_order(s, pr, opt); });
+    guarded("local order", [&] { pa.local = detail::local_order(s, pr, opt); });
     if (pr.canonical && s.make_ad)
-      pa.symplectic = detail::symplectic_condition(s, pr, opt, pa.evaluations_per_step);
-    pa.symmetric = detail::time_symmetry(s, pr, opt, pa.evaluations_per_step);
+      guarded("symplectic condition", [&] {
+        pa.symplectic = detail::symplectic_condition(s, pr, opt, pa.evaluations_per_step);
+      });
+    else if (pr.canonical && s.finite_differences)
+      guarded("symplectic condition", [&] {
+        pa.symplectic = detail::symplectic_condition_fd(s, pr, opt, pa.evaluations_per_step);
+      });
+    guarded("time symmetry", [&] {
+      pa.symmetric = detail::time_symmetry(s, pr, opt, pa.evaluations_per_step);
+    });
     if (detail::selected(opt.long_run_problems, pr.name) && opt.long_run_steps > 0)
-      pa.run = detail::run_long(s, pr, opt);
+      guarded("long run", [&] { pa.run = detail::run_long(s, pr, opt); });
     out.problems.push_back(std::move(pa));
   }
   out.verdicts = detail::judge(out.declared, out.problems);

@@ -70,6 +70,12 @@ class erased_system {
     ++*counter_;
     table_for<Vec>().field(q, p, dq, dp);
   }
+  /// The vector field without counting it (for Jacobians taken by AD for an implicit
+  /// black box: those are not the method's evaluations).
+  template <class Vec>
+  void vector_field_uncounted(const Vec& q, const Vec& p, Vec& dq, Vec& dp) const {
+    table_for<Vec>().field(q, p, dq, dp);
+  }
   template <class Vec>
   typename Vec::Scalar energy(const Vec& q, const Vec& p) const {
     return table_for<Vec>().energy(q, p);

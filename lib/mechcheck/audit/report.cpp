@@ -113,6 +113,12 @@ json to_json(const defect_study& d) {
             {"budget_eps", d.budget_eps},
             {"points", points}};
   if (!d.within_rounding) j["exponent"] = to_json(d.exponent);
+  if (d.resolution > 0) {
+    j["method"] = "finite differences";
+    j["resolution"] = d.resolution;
+    j["worst_relative"] = d.worst_relative;
+  }
+  if (d.area_defect) j["det_minus_one"] = {{"value", *d.area_defect}, {"resolution", *d.area_resolution}};
   return j;
 }
 
@@ -128,6 +134,7 @@ json to_json(const stepper_audit& a, const report_options& opt) {
       continue;
     }
     jp["evaluations_per_step"] = p.evaluations_per_step;
+    if (!p.failures.empty()) jp["failures"] = p.failures;
     jp["global_order"] = to_json(p.global);
     jp["local_order"] = to_json(p.local);
     if (p.symplectic) jp["symplectic_condition"] = to_json(*p.symplectic);

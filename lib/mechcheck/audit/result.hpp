@@ -67,9 +67,18 @@ struct order_study {
 /// A defect that is zero for the claimed property: within its rounding budget, or
 /// growing as a power of h.
 struct defect_study {
+  /// Within the rounding budget (automatic differentiation), or below the resolution
+  /// (finite differences: "no defect above <resolution>", not "preserved to rounding").
   bool within_rounding = false;
   double worst_eps = 0;   ///< the largest defect at the tested steps, in eps x scale
-  double budget_eps = 0;  ///< the rounding budget, in eps x scale
+  double budget_eps = 0;  ///< the rounding budget (or the resolution), in eps x scale
+  /// Finite differences only: the smallest defect their error model resolves, relative
+  /// to the scale (0: the Jacobian came from automatic differentiation).
+  double resolution = 0;
+  double worst_relative = 0;  ///< finite differences: the largest defect, relative
+  /// One degree of freedom, finite differences: det M - 1 at the first tested step (area
+  /// preservation) and its resolution.
+  std::optional<double> area_defect, area_resolution;
   std::vector<study_point> points;  ///< defect against h (when not within rounding)
   fitted_exponent exponent;
 };
@@ -105,6 +114,10 @@ struct problem_audit {
   std::optional<defect_study> symmetric;
   std::optional<long_run> run;
   double evaluations_per_step = 0;
+  /// Measurements that could not be made because a step failed (a library's error code,
+  /// a solve that did not converge): "time symmetry: <the error>". Their claims read as
+  /// not measured on this problem.
+  std::vector<std::string> failures;
 };
 
 /// A claim and its outcome.

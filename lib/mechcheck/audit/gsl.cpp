@@ -1,0 +1,130 @@
+#include "mechcheck/audit/gsl.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+#include <gsl/gsl_version.h>
+
+namespace mechcheck::audit::gsl {
+
+namespace {
+/// The GSL manual's description of each one-step type (GSL 2.7, "Ordinary Differential
+/// Equations: Stepping Functions").
+struct type_info {
+  const char* name;
+  const gsl_odeiv2_step_type* const* type;
+  const char* manual;
+};
+
+const std::vector<type_info>& types() {
+  static const std::vector<type_info> t{
+      {"rk2", &gsl_odeiv2_step_rk2, "Explicit embedded Runge-Kutta (2, 3) method."},
+      {"rk4", &gsl_odeiv2_step_rk4,
+       "Explicit 4th order (classical) Runge-Kutta. Error estimation is carried out by the "
+       "step doubling method."},
+      {"rkf45", &gsl_odeiv2_step_rkf45,
+       "Explicit embedded Runge-Kutta-Fehlberg (4, 5) method. This method is a good "
+       "general-purpose integrator."},
+      {"rkck", &gsl_odeiv2_step_rkck, "Explicit embedded Runge-Kutta Cash-Karp (4, 5) method."},
+      {"rk8pd", &gsl_odeiv2_step_rk8pd,
+       "Explicit embedded Runge-Kutta Prince-Dormand (8, 9) method."},
+      {"rk1imp", &gsl_odeiv2_step_rk1imp,
+       "Implicit Gaussian first order Runge-Kutta. Also known as implicit Euler or backward "
+       "Euler method. Error estimation is carried out by the step doubling method."},
+      {"rk2imp", &gsl_odeiv2_step_rk2imp,
+       "Implicit Gaussian second order Runge-Kutta. Also known as implicit mid-point rule. "
+       "Error estimation is carried out by the step doubling method."},
+      {"rk4imp", &gsl_odeiv2_step_rk4imp,
+       "Implicit Gaussian 4th order Runge-Kutta. Error estimation is carried out by the step "
+       "doubling method."},
+  };
+  return t;
+}
+
+/// GSL never aborts the process: every GSL error is a status code from here on.
+void handler_off() {
+  static const bool done = [] {
+    gsl_set_error_handler_off();
+    return true;
+  }();
+  static_cast<void>(done);
+}
+
+struct context {
+  const type_info* info;
+  ode_system ode;
+  gsl_odeiv2_system sys;
+  gsl_odeiv2_driver* driver = nullptr;
+  std::vector<double> yerr;
+  long long steps = 0;
+};
+
+int rhs(double t, const double y[], double dydt[], void* self) {
+  auto* c = static_cast<context*>(self);
+  return c->ode.rhs(t, y, dydt, c->ode.self) == 0 ? GSL_SUCCESS : GSL_EBADFUNC;
+}
+
+int jacobian(double t, const double y[], double* dfdy, double dfdt[], void* self) {
+  auto* c = static_cast<context*>(self);
+  for (int i = 0; i < c->ode.dimension; ++i) dfdt[i] = 0;  // autonomous problems
+  return c->ode.jacobian(t, y, dfdy, c->ode.self) == 0 ? GSL_SUCCESS : GSL_EBADFUNC;
+}
+
+void step(double* y, double t, double h, void* ctx) {
+  auto* c = static_cast<context*>(ctx);
+  ++c->steps;
+  const int status = gsl_odeiv2_step_apply(c->driver->s, t, h, y, c->yerr.data(), nullptr,
+                                           nullptr, &c->sys);
+  if (status != GSL_SUCCESS)
+    throw convergence_error(std::string("gsl_odeiv2_step_apply (") + c->info->name +
+                            ") returned " + std::to_string(status) + " (" +
+                            gsl_strerror(status) + ") at step " + std::to_string(c->steps) +
+                            ", t = " + to_text(t) + ", h = " + to_text(h));
+}
+}  // namespace
+
+std::string version() { return GSL_VERSION; }
+
+std::vector<black_box> one_step_types(double newton_tolerance) {
+  if (!(newton_tolerance > 0 && std::isfinite(newton_tolerance)))
+    throw domain_error("gsl::one_step_types: the Newton tolerance must be positive and finite, got " +
+                       to_text(newton_tolerance));
+  handler_off();
+  std::vector<black_box> out;
+  for (const type_info& info : types()) {
+    gsl_odeiv2_step* probe = gsl_odeiv2_step_alloc(*info.type, 2);
+    if (!probe) throw error(std::string("gsl_odeiv2_step_alloc (") + info.name + ") failed");
+    const unsigned order = gsl_odeiv2_step_order(probe);
+    gsl_odeiv2_step_free(probe);
+    black_box b;
+    b.name = std::string("gsl::") + info.name;
+    b.origin = "GSL " + version() + " gsl_odeiv2_step_" + info.name + " at fixed steps (" +
+               "gsl_odeiv2_step_apply); order from gsl_odeiv2_step_order; manual: \"" +
+               info.manual + "\"";
+    if (std::string(info.name).find("imp") != std::string::npos)
+      b.origin += "; Newton error level from a driver control with epsabs = epsrel = " +
+                  to_text(newton_tolerance);
+    b.declared.order = static_cast<int>(order);
+    const type_info* ti = &info;
+    b.create = [ti, newton_tolerance](const ode_system& ode) -> void* {
+      auto* c = new context{ti, ode, {}, nullptr, std::vector<double>(std::size_t(ode.dimension)), 0};
+      c->sys = gsl_odeiv2_system{&rhs, &jacobian, static_cast<size_t>(ode.dimension), c};
+      c->driver = gsl_odeiv2_driver_alloc_y_new(&c->sys, *ti->type, 1e-3, newton_tolerance,
+                                                newton_tolerance);
+      if (!c->driver) {
+        delete c;
+        throw error(std::string("gsl_odeiv2_driver_alloc_y_new (") + ti->name + ") failed");
+      }
+      return c;
+    };
+    b.step = &step;
+    b.destroy = [](void* ctx) {
+      auto* c = static_cast<context*>(ctx);
+      if (c->driver) gsl_odeiv2_driver_free(c->driver);
+      delete c;
+    };
+    out.push_back(std::move(b));
+  }
+  return out;
+}
+
+}  // namespace mechcheck::audit::gsl

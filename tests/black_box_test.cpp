@@ -1,0 +1,163 @@
+// Black-box steppers: the library's own steppers behind the C call get the symplectic
+// verdicts their methods deserve from finite differences, with the resolution stated; the
+// finite-difference error model bounds the true error (against AD); bad input and failing
+// steps are typed errors.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "mechcheck/audit/audit.hpp"
+#include "mechcheck/audit/black_box.hpp"
+#include "mechcheck/audit/finite_differences.hpp"
+#include "mechcheck/audit/tableau.hpp"
+#include "mechcheck/integrators.hpp"
+
+namespace black_box_test {
+using namespace mechcheck;
+namespace audit = mechcheck::audit;
+using outcome = audit::verdict::outcome;
+
+template <class S, class V>
+using gauss_legendre2 = gauss_legendre<S, V, 2>;
+
+audit::audit_options quick() {
+  audit::audit_options opt;
+  opt.problems = {"oscillator", "kepler_e0.5", "pendulum"};
+  opt.long_run_steps = 0;
+  opt.timing = false;
+  return opt;
+}
+
+template <template <class, class> class Method>
+audit::stepper_audit black_box_audit(const char* name) {
+  return audit::audit_stepper(
+      audit::black_box_stepper(audit::library_stepper_as_black_box<Method>(name)), quick());
+}
+
+void expect(const audit::stepper_audit& a, const char* claim, outcome o) {
+  const audit::verdict* v = a.find(claim);
+  ASSERT_NE(v, nullptr) << claim;
+  EXPECT_EQ(v->result, o) << a.stepper << " " << claim << ": declared " << v->declared
+                          << ", measured " << v->measured << "; " << v->evidence;
+}
+
+TEST(black_box, symplectic_methods_show_no_defect_above_the_resolution) {
+  for (const auto& a : {black_box_audit<stormer_verlet>("verlet (black box)"),
+                        black_box_audit<symplectic_euler>("symplectic Euler (black box)"),
+                        black_box_audit<gauss_legendre2>("Gauss-Legendre 2 (black box)")}) {
+    expect(a, "symplectic", outcome::confirmed);
+    expect(a, "order", outcome::confirmed);
+    for (const auto& p : a.problems) {
+      ASSERT_TRUE(p.symplectic) << a.stepper << " " << p.problem;
+      EXPECT_TRUE(p.symplectic->within_rounding) << a.stepper << " " << p.problem;
+      // The resolution the error model gives: ~1e-11 on these unit-scale problems.
+      EXPECT_GT(p.symplectic->resolution, 0) << a.stepper;
+      EXPECT_LT(p.symplectic->resolution, 1e-9) << a.stepper << " " << p.problem;
+      EXPECT_NE(a.find("symplectic")->evidence.find("no defect above"), std::string::npos);
+      if (p.problem == "pendulum") {  // one degree of freedom: the area too
+        ASSERT_TRUE(p.symplectic->area_defect);
+        EXPECT_LE(std::abs(*p.symplectic->area_defect), *p.symplectic->area_resolution)
+            << a.stepper;
+      }
+    }
+  }
+}
+
+TEST(black_box, rk4_and_explicit_euler_are_not_symplectic) {
+  for (const auto& a : {black_box_audit<rk4>("rk4 (black box)"),
+                        black_box_audit<explicit_euler>("explicit Euler (black box)")}) {
+    expect(a, "symplectic", outcome::confirmed);  // declared false, measured a defect
+    for (const auto& p : a.problems) {
+      ASSERT_TRUE(p.symplectic);
+      EXPECT_FALSE(p.symplectic->within_rounding) << a.stepper << " " << p.problem;
+      EXPECT_GT(p.symplectic->worst_relative, 10 * p.symplectic->resolution);
+    }
+  }
+  // Euler's defect h^2 A J A^T (as with AD), RK4's at least h^5.
+  const auto euler = black_box_audit<explicit_euler>("explicit Euler (black box)");
+  for (const auto& p : euler.problems) EXPECT_NEAR(p.symplectic->exponent.value, 2.0, 0.15) << p.problem;
+  const auto pendulum = euler.problems.back();
+  ASSERT_TRUE(pendulum.symplectic->area_defect);
+  EXPECT_GT(std::abs(*pendulum.symplectic->area_defect), 100 * *pendulum.symplectic->area_resolution);
+}
+
+TEST(black_box, a_black_box_keeps_the_verdicts_of_its_method_run_directly) {
+  const auto direct = audit::audit_stepper(audit::method<rk4, double>("rk4"), quick());
+  const auto boxed = black_box_audit<rk4>("rk4 (black box)");
+  for (const char* claim : {"order", "symplectic", "symmetric"})
+    EXPECT_EQ(direct.find(claim)->result, boxed.find(claim)->result) << claim;
+  for (std::size_t i = 0; i < direct.problems.size(); ++i)
+    EXPECT_EQ(direct.problems[i].global.points.size(), boxed.problems[i].global.points.size());
+}
+
+TEST(finite_differences, the_error_model_bounds_the_true_error) {
+  // Against the AD Jacobian of the same step: every entry within its stated error, and
+  // the stated error not vacuous (below 1e-9 on these problems).
+  const auto problems = audit::reference_problems<double>();
+  for (const auto& pr : {problems[0], problems[1], problems[3]}) {
+    const Eigen::Index n = pr.initial.q.size();
+    dynamic_vector<double> z(2 * n);
+    z << pr.initial.q, pr.initial.p;
+    const double h = pr.h_local;
+    const std::function<dynamic_vector<double>(const dynamic_vector<double>&)> map =
+        [&](const dynamic_vector<double>& w) {
+          phase_state<dynamic_vector<double>> x{w.head(n), w.tail(n)};
+          rk4<audit::erased_system<double>, dynamic_vector<double>>{pr.system}(x, h);
+          dynamic_vector<double> out(2 * n);
+          out << x.q, x.p;
+          return out;
+        };
+    const auto fd = audit::finite_difference_jacobian<double>(map, z, 4 * 5);
+    const auto make = [&pr]<class S>() {
+      return rk4<audit::erased_system<double>, dynamic_vector<S>>{pr.system};
+    };
+    const dynamic_matrix<double> exact = audit::step_jacobian_of(make, z, h, n);
+    for (Eigen::Index i = 0; i < exact.rows(); ++i)
+      for (Eigen::Index j = 0; j < exact.cols(); ++j) {
+        EXPECT_LE(std::abs(fd.value(i, j) - exact(i, j)), fd.error(i, j))
+            << pr.name << " (" << i << "," << j << ")";
+        EXPECT_LT(fd.error(i, j), 1e-9) << pr.name;
+      }
+  }
+}
+
+/// A C step function that does nothing but set y[0] to NaN.
+void nan_step(double* y, double, double, void*) { y[0] = std::numeric_limits<double>::quiet_NaN(); }
+
+TEST(black_box, bad_input_and_failing_steps_are_typed_errors) {
+  audit::black_box none;
+  none.name = "no step";
+  EXPECT_THROW(audit::black_box_stepper(none), domain_error);
+  audit::black_box unnamed = audit::library_stepper_as_black_box<rk4>("x");
+  unnamed.name.clear();
+  EXPECT_THROW(audit::black_box_stepper(unnamed), domain_error);
+
+  const auto pr = audit::oscillator_problem<double>();
+  auto step = audit::black_box_stepper(audit::library_stepper_as_black_box<rk4>("rk4")).make(pr.system);
+  audit::state<double> x = pr.initial;
+  EXPECT_THROW(step(x, 0.0), non_finite_error);
+  EXPECT_THROW(step(x, std::nan("")), non_finite_error);
+  x.q(0) = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(step(x, 0.1), non_finite_error);
+
+  audit::black_box broken;
+  broken.name = "nan step";
+  broken.step = &nan_step;
+  auto bad = audit::black_box_stepper(broken).make(pr.system);
+  audit::state<double> y = pr.initial;
+  try {
+    bad(y, 0.1);
+    bad(y, 0.1);
+    FAIL() << "no error";
+  } catch (const non_finite_error& e) {
+    EXPECT_NE(std::string(e.what()).find("nan step: step 1 at t = 0"), std::string::npos) << e.what();
+  }
+  // A failing step becomes a failed run in the audit, not a crash.
+  const auto a = audit::audit_stepper(audit::black_box_stepper(broken), quick());
+  for (const auto& p : a.problems) EXPECT_FALSE(p.skipped.empty()) << p.problem;
+}
+
+}  // namespace black_box_test
