@@ -161,7 +161,8 @@ order_study global_order(const stepper_under_audit<T>& s, const problem<T>& pr,
                         : std::is_floating_point_v<T> ? 1L << 16
                                                       : 1L << 14;
   return halving_study(run, std::max<long>(2, pr.steps0 / 4), max_steps, eps_of<T>(),
-                       [&](long n) { return to_double(T(pr.t_end / T(n))); });
+                       [&](long n) { return to_double(T(pr.t_end / T(n))); },
+                       !std::is_floating_point_v<T>);
 }
 
 /// Local order: the error of one step from the initial state against the exact solution,

@@ -33,6 +33,13 @@ std::string claim_cell(const stepper_audit& a, const char* claim) {
   const verdict* v = find_verdict(a, claim);
   if (!v) return "-";
   std::string cell = v->declared + " / " + v->measured;
+  if (std::string(claim) == "symplectic" && v->measured == "yes") {
+    // Measured by finite differences: "yes" means no defect above their resolution.
+    double resolution = 0;
+    for (const auto& p : a.problems)
+      if (p.symplectic) resolution = std::max(resolution, p.symplectic->resolution);
+    if (resolution > 0) cell += format(" (FD, <%.0e)", resolution);
+  }
   if (v->result == verdict::outcome::contradicted) cell += " (contradicted)";
   return cell;
 }
@@ -244,10 +251,23 @@ void print_table(std::ostream& out, const std::vector<stepper_audit>& audits,
             << ", measured " << v.measured << ": " << v.evidence << "\n";
 }
 
+/// JSON has no NaN or infinity (nlohmann_json would write null): such a number, which a
+/// diverged run can leave in a study, is written as the text "nan", "inf" or "-inf".
+void spell_non_finite(json& j) {
+  if (j.is_number_float()) {
+    const double x = j.get<double>();
+    if (!std::isfinite(x)) j = std::isnan(x) ? "nan" : x > 0 ? "inf" : "-inf";
+  } else if (j.is_structured()) {
+    for (auto& e : j) spell_non_finite(e);
+  }
+}
+
 std::string to_json(const std::vector<stepper_audit>& audits, const report_options& opt) {
   json all = json::array();
   for (const auto& a : audits) all.push_back(to_json(a, opt));
-  return json({{"audits", all}}).dump(1) + "\n";
+  json doc = {{"audits", all}};
+  spell_non_finite(doc);
+  return doc.dump(1) + "\n";
 }
 
 std::string to_markdown(const std::vector<stepper_audit>& audits, const report_options& opt) {
@@ -276,6 +296,7 @@ std::string to_markdown(const std::vector<stepper_audit>& audits, const report_o
         md << "- " << p.problem << ": skipped (" << p.skipped << ")\n";
         continue;
       }
+      for (const auto& f : p.failures) md << "- " << p.problem << ": not measured, " << f << "\n";
       if (!p.run) continue;
       md << "- " << p.problem << ", " << p.run->steps << " steps of h = "
          << format("%.4g", p.run->h) << ":";

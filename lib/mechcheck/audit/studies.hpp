@@ -110,10 +110,13 @@ inline constexpr double stall_ratio = 8;
 /// within floor_margin of its rounding floor (finer steps measure rounding only) or n
 /// exceeds max_steps. The fit takes the halvings inside the convergent regime (errors
 /// below 1/10) whose errors are both above floor_margin times the largest floor; a stall
-/// (above) is reported with its evidence.
+/// (above) is reported with its evidence. With stop_when_settled the study also ends once
+/// three exponents agree within 0.05 (beyond double, where runs are costly and the floor
+/// is far below any stall a coarse run could show; the local study resolves those).
 template <class Run>
 order_study halving_study(Run&& run, long n0, long max_steps, double eps,
-                          const std::function<double(long)>& step_of) {
+                          const std::function<double(long)>& step_of,
+                          bool stop_when_settled = false) {
   order_study study;
   double resolvable = 0;
   for (long n = n0; n <= max_steps; n *= 2) {
@@ -127,7 +130,14 @@ order_study halving_study(Run&& run, long n0, long max_steps, double eps,
     study.points.push_back({step_of(n), r.error, r.evaluations, r.change});
     const double floor = rounding_floor(eps, r.evaluations);
     resolvable = std::max(resolvable, floor_margin * floor);
-    if (!(r.error >= floor_margin * floor)) break;  // at the floor (NaN ends it too)
+    if (!(r.error >= floor_margin * floor)) break;  // at the floor
+    if (stop_when_settled) {  // three exponents within 0.05: finer runs add nothing
+      std::vector<study_point> so_far;
+      for (const auto& p : study.points)
+        if (p.error < 0.1) so_far.push_back(p);
+      const fitted_exponent f = fit_halvings(so_far, resolvable);
+      if (f.used == 3 && f.spread < 0.05) break;
+    }
   }
   std::vector<study_point> convergent;
   for (const auto& p : study.points)

@@ -7,8 +7,8 @@
 ///   Y_i = y + h sum_{j <= i} a_ij K_j,   K_i = f(Y_i),   y' = y + h sum_i b_i K_i.
 ///
 /// A diagonal entry a_ii != 0 makes stage i implicit: K_i = f(Z_i + h a_ii K_i) with Z_i
-/// the explicit part, solved by modified Newton with the Jacobian of f by AD (tier
-/// scalars) or by fixed-point sweeps (AD scalars, whose derivatives converge with the
+/// the explicit part, solved by modified Newton with the Jacobian of f by AD at the step's
+/// start (tier scalars) or by fixed-point sweeps (AD scalars, whose derivatives converge with the
 /// values), from K_i = f(Z_i), until the change is at the tier's rounding floor or stops
 /// shrinking; convergence_error otherwise. The tableau's coefficients are held in the
 /// tier: a table given in double is exactly that table, in every tier.
@@ -117,6 +117,8 @@ class runge_kutta {
   }
 
   void step(phase_state<Vec>& x, const scalar& h) {
+    jacobian_valid_ = false;
+    factors_.clear();
     const int s = tableau_.stages();
     std::vector<Vec> kq(static_cast<std::size_t>(s)), kp(static_cast<std::size_t>(s));
     for (int i = 0; i < s; ++i) {
@@ -130,7 +132,7 @@ class runge_kutta {
       }
       const real& aii = tableau_.a[std::size_t(i)][std::size_t(i)];
       field(zq, zp, kq[std::size_t(i)], kp[std::size_t(i)]);
-      if (aii != 0) solve_stage(zq, zp, lift<scalar>(aii) * h, kq[std::size_t(i)], kp[std::size_t(i)]);
+      if (aii != 0) solve_stage(x, zq, zp, aii, h, kq[std::size_t(i)], kp[std::size_t(i)]);
     }
     for (int i = 0; i < s; ++i) {
       const real& b = tableau_.b[std::size_t(i)];
@@ -141,30 +143,43 @@ class runge_kutta {
     }
   }
 
-  /// K = f(Z + ha K) to the tier's precision: modified Newton for tier scalars (the
-  /// Jacobian J = df/dy by AD once, at the explicit guess Z + ha f(Z); (I - ha J) factored
-  /// once), fixed-point sweeps for AD scalars.
-  void solve_stage(const Vec& zq, const Vec& zp, const scalar& ha, Vec& kq, Vec& kp) {
+  /// K = f(Z + h a_ii K) to the tier's precision: modified Newton for tier scalars, with
+  /// J = df/dy by AD at the step's start (once a step) and I - h a_ii J factored once per
+  /// distinct a_ii (an SDIRK factors once a step); fixed-point sweeps for AD scalars.
+  void solve_stage(const phase_state<Vec>& x, const Vec& zq, const Vec& zp, const real& aii,
+                   const scalar& h, Vec& kq, Vec& kp) {
+    const scalar ha = lift<scalar>(aii) * h;
     const Eigen::Index nq = zq.size(), np = zp.size(), n = nq + np;
     const real eps = std::numeric_limits<real>::epsilon();
     real previous = -1;
     int extra = is_ad_v<scalar> ? 3 : 0;
     bool converged = false;
-    [[maybe_unused]] Eigen::PartialPivLU<dynamic_matrix<scalar>> lu;
+    [[maybe_unused]] const Eigen::PartialPivLU<dynamic_matrix<scalar>>* lu = nullptr;
     if constexpr (!is_ad_v<scalar>) {
-      const auto f = [this, nq, np]<class S>(const dynamic_vector<S>& w) -> dynamic_vector<S> {
-        dynamic_vector<S> q = w.head(nq), p = w.tail(np), dq2 = q, dp2 = p;
-        if constexpr (requires { system_.vector_field_uncounted(q, p, dq2, dp2); })
-          system_.vector_field_uncounted(q, p, dq2, dp2);
-        else
-          system_.vector_field(q, p, dq2, dp2);
-        dynamic_vector<S> out(w.size());
-        out << dq2, dp2;
-        return out;
-      };
-      dynamic_vector<scalar> y(n);
-      y << Vec(zq + ha * kq), Vec(zp + ha * kp);
-      lu.compute(dynamic_matrix<scalar>(dynamic_matrix<scalar>::Identity(n, n) - ha * jacobian(f, y)));
+      if (!jacobian_valid_) {
+        const auto f = [this, nq, np]<class S>(const dynamic_vector<S>& w) -> dynamic_vector<S> {
+          dynamic_vector<S> q = w.head(nq), p = w.tail(np), dq2 = q, dp2 = p;
+          if constexpr (requires { system_.vector_field_uncounted(q, p, dq2, dp2); })
+            system_.vector_field_uncounted(q, p, dq2, dp2);
+          else
+            system_.vector_field(q, p, dq2, dp2);
+          dynamic_vector<S> out(w.size());
+          out << dq2, dp2;
+          return out;
+        };
+        dynamic_vector<scalar> y(n);
+        y << x.q, x.p;
+        jacobian_ = jacobian(f, y);
+        jacobian_valid_ = true;
+      }
+      for (const auto& [a, factor] : factors_)
+        if (a == aii) lu = &factor;
+      if (!lu) {
+        factors_.emplace_back(aii, Eigen::PartialPivLU<dynamic_matrix<scalar>>(
+                                       dynamic_matrix<scalar>(dynamic_matrix<scalar>::Identity(n, n) -
+                                                              ha * jacobian_)));
+        lu = &factors_.back().second;
+      }
     }
     for (int iteration = 0; iteration < 200; ++iteration) {
       const Vec yq = zq + ha * kq, yp = zp + ha * kp;
@@ -174,7 +189,7 @@ class runge_kutta {
       if constexpr (!is_ad_v<scalar>) {
         dynamic_vector<scalar> r(n);
         r << dq, dp;
-        const dynamic_vector<scalar> delta = lu.solve(r);
+        const dynamic_vector<scalar> delta = lu->solve(r);
         dq = delta.head(nq);
         dp = delta.tail(np);
       }
@@ -205,6 +220,10 @@ class runge_kutta {
 
   System system_;
   butcher_tableau<real> tableau_;
+  // The step's Jacobian at its start and the factors of I - h a_ii J (tier scalars).
+  bool jacobian_valid_ = false;
+  dynamic_matrix<scalar> jacobian_;
+  std::vector<std::pair<real, Eigen::PartialPivLU<dynamic_matrix<scalar>>>> factors_;
 };
 
 }  // namespace mechcheck
