@@ -563,6 +563,9 @@ const order_row order_rows[] = {
     {"only_local_below", 4, {problem_with(std::nullopt, fit{4.0, 0.0, 3})}, outcome::contradicted, "-"},
 };
 
+// gtest prints a parameter in ctest's test list: its name, not its bytes.
+void PrintTo(const order_row& r, std::ostream* os) { *os << r.name; }
+
 INSTANTIATE_TEST_SUITE_P(audit, verdict_table, ::testing::ValuesIn(order_rows),
                          [](const auto& info) { return std::string(info.param.name); });
 
@@ -608,6 +611,8 @@ const property_row property_rows[] = {
     {"not_measured", true, {std::nullopt, std::nullopt}, outcome::not_measured},
     {"measured_on_one", true, {std::nullopt, true}, outcome::confirmed},
 };
+
+void PrintTo(const property_row& r, std::ostream* os) { *os << r.name; }
 
 INSTANTIATE_TEST_SUITE_P(audit, property_table, ::testing::ValuesIn(property_rows),
                          [](const auto& info) { return std::string(info.param.name); });

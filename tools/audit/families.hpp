@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mechcheck/audit/result.hpp"
+#include "mechcheck/audit/tableau_file.hpp"
 
 namespace mechcheck::audit_tool {
 
@@ -19,6 +20,7 @@ struct request {
   /// The Newton tolerance of third-party implicit steppers (GSL's driver control, ARKODE's
   /// SStolerances); 0: each adapter's default.
   double newton_tolerance = 0;
+  std::vector<audit::tableau_file> tableaus;  ///< --tableau files, read and validated
 };
 
 /// What a family returns: the names it has (matching) and their audits.
@@ -37,5 +39,8 @@ family_result gsl_double(const request& r);
 /// (family_arkode.cpp; where SUNDIALS is found); in mpfr50 the latter only.
 family_result arkode_double(const request& r);
 family_result arkode_mpfr50(const request& r);
+/// The --tableau files' steppers (family_tableau.cpp).
+family_result tableau_double(const request& r);
+family_result tableau_mpfr50(const request& r);
 
 }  // namespace mechcheck::audit_tool

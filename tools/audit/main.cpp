@@ -12,6 +12,7 @@
 
 #include "families.hpp"
 #include "mechcheck/audit/report.hpp"
+#include "mechcheck/audit/tableau_file.hpp"
 
 namespace {
 using namespace mechcheck;
@@ -58,6 +59,12 @@ int main(int argc, char** argv) {
                  "Newton tolerance of third-party implicit steppers (GSL's driver control, "
                  "ARKODE's SStolerances); default each adapter's own (1e-14)")
       ->check(CLI::PositiveNumber);
+  std::vector<std::string> tableau_files;
+  app.add_option("--tableau", tableau_files,
+                 "a Butcher tableau in JSON (tableaus/*.json shows the format): its order "
+                 "conditions up to order 10 in mpfr100, then its stepper audited as "
+                 "tableau::<name>; with no --stepper only the tableaus are audited")
+      ->check(CLI::ExistingFile);
   CLI11_PARSE(app, argc, argv);
 
   const auto start = clock_type::now();
@@ -66,6 +73,18 @@ int main(int argc, char** argv) {
   };
   audit_tool::request request;
   request.patterns = steppers;
+  std::vector<audit::tableau_analysis> analyses;
+  for (const auto& file : tableau_files) {
+    try {
+      request.tableaus.push_back(audit::read_tableau(file));
+      analyses.push_back(audit::analyse(request.tableaus.back()));
+    } catch (const error& e) {
+      std::cerr << "mechcheck-audit: " << e.what() << "\n";
+      return 1;
+    }
+    if (!list) std::cout << audit::describe(analyses.back()) << "\n";
+  }
+  if (!tableau_files.empty() && steppers.empty()) request.patterns = {"tableau::*"};
   request.list_only = list;
   request.newton_tolerance = newton_tolerance;
   request.options.problems = problems;
@@ -84,6 +103,7 @@ int main(int argc, char** argv) {
     request.options.long_run_steps = tier == "double" ? long_run_steps : long_run_steps_mpfr50;
     std::vector<audit_tool::family_result> families;
     if (tier == "double") {
+      families.push_back(audit_tool::tableau_double(request));
       families.push_back(audit_tool::builtin_double(request));
       families.push_back(audit_tool::odeint_double(request));
 #ifdef MECHCHECK_HAVE_GSL
@@ -93,6 +113,7 @@ int main(int argc, char** argv) {
       families.push_back(audit_tool::arkode_double(request));
 #endif
     } else {
+      families.push_back(audit_tool::tableau_mpfr50(request));
       families.push_back(audit_tool::builtin_mpfr50(request));
       families.push_back(audit_tool::odeint_mpfr50(request));
 #ifdef MECHCHECK_HAVE_ARKODE
@@ -120,7 +141,10 @@ int main(int argc, char** argv) {
   if (!long_run_problems.empty()) report.long_run_problem = long_run_problems.front();
   audit::print_table(std::cout, audits, report);
   try {
-    const auto written = audit::write_report(output, audits, report);
+    auto written = audit::write_report(output, audits, report);
+    if (!analyses.empty()) {
+      for (const auto& w : audit::write_tableau_report(output, analyses)) written.push_back(w);
+    }
     std::cout << "\nwrote";
     for (const auto& w : written) std::cout << " " << w;
     std::cout << "\n";

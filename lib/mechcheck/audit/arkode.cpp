@@ -10,6 +10,7 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include <cstdlib>
 #include <map>
 #include <memory>
 
@@ -116,14 +117,16 @@ int jac(realtype t, N_Vector y, N_Vector, SUNMatrix j, void* user, N_Vector, N_V
 
 void errors(int, const char* module, const char* function, char* msg, void* user) {
   auto* r = static_cast<run*>(user);
-  r->message = std::string(module) + " " + function + ": " + msg;
+  r->message = std::string(module ? module : "?") + " " + (function ? function : "?") + ": " + (msg ? msg : "");
 }
 
 void check(run* r, int flag, const char* call, double t, double h) {
   if (flag >= 0) return;
-  const char* flag_name = r->implicit ? ARKStepGetReturnFlagName(flag) : ERKStepGetReturnFlagName(flag);
+  // The name is malloc'ed by ARKODE and the caller's to free.
+  const std::unique_ptr<char, decltype(&std::free)> flag_name(
+      r->implicit ? ARKStepGetReturnFlagName(flag) : ERKStepGetReturnFlagName(flag), &std::free);
   std::string text = std::string(call) + " returned " + std::to_string(flag) + " (" +
-                     (flag_name ? flag_name : "?") + ")";
+                     (flag_name ? flag_name.get() : "?") + ")";
   if (!r->message.empty()) text += ": " + r->message;
   throw convergence_error(r->name + ": " + text + " at step " + std::to_string(r->steps) +
                           ", t = " + to_text(t) + ", h = " + to_text(h));

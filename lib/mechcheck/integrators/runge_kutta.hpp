@@ -1,16 +1,18 @@
 #pragma once
-/// A Runge-Kutta method given by its Butcher tableau (c, A, b), explicit or diagonally
-/// implicit, for any Hamiltonian system (its vector field), in any tier and on AD scalars:
+/// A Runge-Kutta method given by its Butcher tableau (c, A, b) -- explicit, diagonally
+/// implicit or fully implicit -- for any Hamiltonian system (its vector field), in any tier and on AD scalars:
 /// a published or a library's table of coefficients becomes a stepper the audit can hold
 /// to its claims.
 ///
 ///   Y_i = y + h sum_{j <= i} a_ij K_j,   K_i = f(Y_i),   y' = y + h sum_i b_i K_i.
 ///
 /// A diagonal entry a_ii != 0 makes stage i implicit: K_i = f(Z_i + h a_ii K_i) with Z_i
-/// the explicit part, solved by modified Newton with the Jacobian of f by AD at the step's
-/// start (tier scalars) or by fixed-point sweeps (AD scalars, whose derivatives converge with the
-/// values), from K_i = f(Z_i), until the change is at the tier's rounding floor or stops
-/// shrinking; convergence_error otherwise. The tableau's coefficients are held in the
+/// the explicit part; an entry above the diagonal couples the stages, which are then
+/// solved together, K = f(y + h (A (x) I) K). Either is solved by modified Newton with the
+/// Jacobian J of f by AD at the step's start (tier scalars; I - h a_ii J, or I - h A (x) J,
+/// factored once) or by fixed-point sweeps (AD scalars, whose derivatives converge with
+/// the values), until the change is at the tier's rounding floor or stops shrinking;
+/// convergence_error otherwise. The tableau's coefficients are held in the
 /// tier: a table given in double is exactly that table, in every tier.
 
 #include <cmath>
@@ -22,7 +24,7 @@
 
 namespace mechcheck {
 
-/// A Butcher tableau in the real type R: a (s x s, a_ij = 0 for j > i), b and c (s).
+/// A Butcher tableau in the real type R: a (s x s), b and c (s).
 template <class R>
 struct butcher_tableau {
   std::vector<std::vector<R>> a;
@@ -35,18 +37,30 @@ struct butcher_tableau {
     return true;
   }
   /// The tableau with every coefficient converted to R2 (exact from double into a wider
-  /// tier).
+  /// tier; rounded to nearest from a wider one).
   template <class R2>
   butcher_tableau<R2> as() const {
+    const auto convert = [](const std::vector<R>& v) {
+      std::vector<R2> out;
+      out.reserve(v.size());
+      for (const R& x : v) out.push_back(static_cast<R2>(x));
+      return out;
+    };
     butcher_tableau<R2> t;
-    for (const auto& row : a) t.a.emplace_back(row.begin(), row.end());
-    t.b.assign(b.begin(), b.end());
-    t.c.assign(c.begin(), c.end());
+    for (const auto& row : a) t.a.push_back(convert(row));
+    t.b = convert(b);
+    t.c = convert(c);
     return t;
   }
-  /// Throws dimension_error for inconsistent sizes, non_finite_error for a non-finite
-  /// coefficient and domain_error for a_ij != 0 above the diagonal (a fully implicit
-  /// method); `where` names the caller.
+  /// True when a_ij = 0 above the diagonal (explicit or diagonally implicit).
+  bool is_diagonally_implicit() const {
+    for (int i = 0; i < stages(); ++i)
+      for (int j = i + 1; j < stages(); ++j)
+        if (a[std::size_t(i)][std::size_t(j)] != 0) return false;
+    return true;
+  }
+  /// Throws dimension_error for inconsistent sizes and non_finite_error for a non-finite
+  /// coefficient; `where` names the caller.
   void validate(const std::string& where) const {
     const std::size_t s = b.size();
     if (s == 0) throw dimension_error(where + ": the tableau has no stages");
@@ -61,11 +75,6 @@ struct butcher_tableau {
         if (!is_finite(a[i][j]))
           throw non_finite_error(where + ": a(" + std::to_string(i) + "," + std::to_string(j) +
                                  ") = " + to_text(a[i][j]));
-        if (j > i && a[i][j] != 0)
-          throw domain_error(where + ": a(" + std::to_string(i) + "," + std::to_string(j) +
-                             ") = " + to_text(a[i][j]) +
-                             " above the diagonal: only explicit and diagonally implicit "
-                             "tableaus are supported");
       }
       if (!is_finite(b[i]) || !is_finite(c[i]))
         throw non_finite_error(where + ": b(" + std::to_string(i) + ") = " + to_text(b[i]) +
@@ -84,6 +93,7 @@ class runge_kutta {
   runge_kutta(System system, butcher_tableau<real> tableau)
       : system_(std::move(system)), tableau_(std::move(tableau)) {
     tableau_.validate("runge_kutta");
+    diagonal_ = tableau_.is_diagonally_implicit();
   }
 
   const butcher_tableau<real>& tableau() const { return tableau_; }
@@ -119,6 +129,7 @@ class runge_kutta {
   void step(phase_state<Vec>& x, const scalar& h) {
     jacobian_valid_ = false;
     factors_.clear();
+    if (!diagonal_) return coupled_step(x, h);
     const int s = tableau_.stages();
     std::vector<Vec> kq(static_cast<std::size_t>(s)), kp(static_cast<std::size_t>(s));
     for (int i = 0; i < s; ++i) {
@@ -141,6 +152,94 @@ class runge_kutta {
       x.q += hb * kq[std::size_t(i)];
       x.p += hb * kp[std::size_t(i)];
     }
+  }
+
+  /// dy/dt = f(y) as one vector (q, p) of the tier or AD scalars.
+  template <class S>
+  dynamic_vector<S> stacked_field(const dynamic_vector<S>& w, Eigen::Index nq) const {
+    const Eigen::Index np = w.size() - nq;
+    dynamic_vector<S> q = w.head(nq), p = w.tail(np), dq = q, dp = p;
+    if constexpr (requires { system_.vector_field_uncounted(q, p, dq, dp); }) {
+      if constexpr (!std::is_same_v<S, scalar>) {
+        system_.vector_field_uncounted(q, p, dq, dp);
+      } else {
+        system_.vector_field(q, p, dq, dp);
+      }
+    } else {
+      system_.vector_field(q, p, dq, dp);
+    }
+    dynamic_vector<S> out(w.size());
+    out << dq, dp;
+    return out;
+  }
+
+  /// A fully implicit step: all stages together.
+  void coupled_step(phase_state<Vec>& x, const scalar& h) {
+    const int s = tableau_.stages();
+    const Eigen::Index nq = x.q.size(), n = nq + x.p.size();
+    dynamic_vector<scalar> y(n);
+    y << x.q, x.p;
+    const dynamic_vector<scalar> f0 = stacked_field(y, nq);
+    dynamic_vector<scalar> k(s * n);
+    for (int i = 0; i < s; ++i) k.segment(i * n, n) = f0;
+    [[maybe_unused]] Eigen::PartialPivLU<dynamic_matrix<scalar>> lu;
+    if constexpr (!is_ad_v<scalar>) {
+      const auto f = [this, nq]<class S>(const dynamic_vector<S>& w) {
+        return stacked_field<S>(w, nq);
+      };
+      const dynamic_matrix<scalar> j = jacobian(f, y);
+      dynamic_matrix<scalar> m = dynamic_matrix<scalar>::Identity(s * n, s * n);
+      for (int i = 0; i < s; ++i)
+        for (int l = 0; l < s; ++l) {
+          const real& a = tableau_.a[std::size_t(i)][std::size_t(l)];
+          if (a != 0) m.block(i * n, l * n, n, n) -= (lift<scalar>(a) * h) * j;
+        }
+      lu.compute(m);
+    }
+    const real eps = std::numeric_limits<real>::epsilon();
+    real previous = -1;
+    int extra = is_ad_v<scalar> ? 3 : 0;
+    bool converged = false;
+    for (int iteration = 0; iteration < 200; ++iteration) {
+      dynamic_vector<scalar> r(s * n);
+      for (int i = 0; i < s; ++i) {
+        dynamic_vector<scalar> yi = y;
+        for (int l = 0; l < s; ++l) {
+          const real& a = tableau_.a[std::size_t(i)][std::size_t(l)];
+          if (a != 0) yi += (lift<scalar>(a) * h) * k.segment(l * n, n);
+        }
+        r.segment(i * n, n) = stacked_field(yi, nq) - k.segment(i * n, n);
+      }
+      dynamic_vector<scalar> delta = r;
+      if constexpr (!is_ad_v<scalar>) delta = lu.solve(r);
+      k += delta;
+      using std::abs;
+      real change = 0, size = 0;
+      for (Eigen::Index i = 0; i < k.size(); ++i) {
+        change = std::max(change, real(abs(innermost_value(delta(i)))));
+        size = std::max(size, real(abs(innermost_value(k(i)))));
+      }
+      if (!is_finite(change))
+        throw non_finite_error("runge_kutta: the implicit stages became non-finite");
+      const real floor = eps * (size > 1 ? size : real(1));
+      if (!converged)
+        converged = change <= 2 * floor ||
+                    (change <= 1024 * floor && previous >= 0 && 2 * change > previous);
+      previous = change;
+      if (converged && extra-- <= 0) {
+        for (int i = 0; i < s; ++i) {
+          const real& b = tableau_.b[std::size_t(i)];
+          if (b == 0) continue;
+          const dynamic_vector<scalar> ki = k.segment(i * n, n);
+          x.q += (lift<scalar>(b) * h) * Vec(ki.head(nq));
+          x.p += (lift<scalar>(b) * h) * Vec(ki.tail(n - nq));
+        }
+        return;
+      }
+    }
+    throw convergence_error("runge_kutta: the implicit stages did not converge in 200 "
+                            "iterations (last change " + to_text(previous) + ", h = " +
+                            to_text(h) + ")");
   }
 
   /// K = f(Z + h a_ii K) to the tier's precision: modified Newton for tier scalars, with
@@ -220,6 +319,7 @@ class runge_kutta {
 
   System system_;
   butcher_tableau<real> tableau_;
+  bool diagonal_ = true;  // explicit or diagonally implicit: stage by stage
   // The step's Jacobian at its start and the factors of I - h a_ii J (tier scalars).
   bool jacobian_valid_ = false;
   dynamic_matrix<scalar> jacobian_;

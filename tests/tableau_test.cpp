@@ -1,0 +1,253 @@
+// The tableau audit: rooted trees by their known counts and densities, the order
+// conditions of the classical tableaus in tableaus/ against their published orders, broken
+// copies (one coefficient changed in its 10th digit) contradicted with residuals near
+// 1e-10, and malformed files as typed errors naming the file, the entry and the value.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "mechcheck/audit/order_conditions.hpp"
+#include "mechcheck/audit/tableau.hpp"
+#include "mechcheck/audit/tableau_file.hpp"
+
+namespace tableau_test {
+using namespace mechcheck;
+namespace audit = mechcheck::audit;
+namespace fs = std::filesystem;
+
+const fs::path dir = MECHCHECK_TABLEAU_DIR;
+
+TEST(rooted_trees, counts_are_those_of_oeis_a000081) {
+  const std::vector<int> expected{1, 1, 2, 4, 9, 20, 48, 115, 286, 719};
+  const auto& trees = audit::rooted_trees(10);
+  std::vector<int> count(10, 0);
+  for (const auto& t : trees) count[std::size_t(t.order - 1)] += 1;
+  EXPECT_EQ(count, expected);
+}
+
+/// sigma(t): the order of t's symmetry group, prod over distinct subtrees u of
+/// sigma(u)^m m! for u repeated m times.
+double symmetry(const std::vector<audit::rooted_tree>& trees, std::size_t k) {
+  std::map<int, int> multiplicity;
+  for (const int c : trees[k].children) multiplicity[c] += 1;
+  double s = 1;
+  for (const auto& [child, m] : multiplicity)
+    for (int i = 1; i <= m; ++i) s *= symmetry(trees, std::size_t(child)) * i;
+  return s;
+}
+
+TEST(rooted_trees, densities_bushy_tall_and_the_labelling_identity) {
+  const auto& trees = audit::rooted_trees(10);
+  double factorial = 1;
+  for (int n = 1; n <= 10; ++n) {
+    factorial *= n;
+    bool bushy = false, tall = false;
+    // Sum over |t| = n of alpha(t) = n! / (sigma(t) gamma(t)), the number of monotone
+    // labellings, is (n - 1)! (the increasing labelled trees on n nodes).
+    double labellings = 0;
+    for (std::size_t k = 0; k < trees.size(); ++k) {
+      const auto& t = trees[k];
+      if (t.order != n) continue;
+      labellings += factorial / (symmetry(trees, k) * t.density);
+      const bool all_leaves = std::all_of(t.children.begin(), t.children.end(), [](int c) { return c == 0; });
+      if (int(t.children.size()) == n - 1 && all_leaves) {
+        bushy = true;
+        EXPECT_EQ(t.density, n);
+      }
+      // The tall tree: a chain, each node's only child the tall tree of one order less.
+      bool chain = true;
+      for (std::size_t u = k; trees[u].order > 1; u = std::size_t(trees[u].children[0]))
+        if (trees[u].children.size() != 1) {
+          chain = false;
+          break;
+        }
+      if (chain) {
+        tall = true;
+        EXPECT_EQ(t.density, factorial);
+      }
+    }
+    EXPECT_TRUE(bushy && tall) << n;
+    EXPECT_EQ(labellings, factorial / n) << n;
+  }
+}
+
+TEST(order_conditions, of_forward_euler_and_the_explicit_midpoint) {
+  butcher_tableau<mpfr100> euler{{{0}}, {1}, {0}};
+  const auto e = audit::order_conditions(euler, 4);
+  EXPECT_EQ(e.residual[0], 0);
+  EXPECT_NEAR(e.residual[1], 0.5, 1e-30);  // b c = 0, not 1/2
+  EXPECT_EQ(e.order(e.tolerance), 1);
+  butcher_tableau<mpfr100> midpoint{{{0, 0}, {mpfr100(1) / 2, 0}}, {0, 1}, {0, mpfr100(1) / 2}};
+  const auto m = audit::order_conditions(midpoint, 4);
+  EXPECT_EQ(m.order(m.tolerance), 2);
+  // Order 3: b (c*c) = 1/4 against 1/3, b A c = 0 against 1/6.
+  EXPECT_NEAR(m.residual[2], 1.0 / 6, 1e-15);
+}
+
+struct published {
+  const char* file;
+  int order, embedding_order;  // 0: no embedding
+  int stage_order;
+  bool symplectic;
+};
+
+// Orders as published: Hairer, Norsett & Wanner I (II.1, II.5, II.10) and II (IV.5,
+// IV.6); stage orders of collocation methods = stages, of explicit methods 1.
+const std::vector<published> classical{
+    {"rk4", 4, 0, 1, false},         {"kutta3", 3, 0, 1, false},
+    {"dopri5", 5, 4, 1, false},      {"cash_karp54", 5, 4, 1, false},
+    {"fehlberg78", 8, 7, 1, false},  {"verner65", 6, 5, 1, false},
+    {"gauss2", 4, 0, 2, true},       {"gauss3", 6, 0, 3, true},
+    {"gauss5", 10, 0, 5, true},      {"radau_iia3", 5, 0, 3, false},
+    {"lobatto_iiia3", 4, 0, 3, false}, {"sdirk3", 3, 0, 1, false},
+};
+
+TEST(tableau_audit, agrees_with_the_published_order_of_twelve_tableaus) {
+  for (const auto& p : classical) {
+    SCOPED_TRACE(p.file);
+    const auto file = audit::read_tableau(dir / (std::string(p.file) + ".json"));
+    const auto a = audit::analyse(file);
+    // Every condition up to the order holds to mpfr100 rounding; the next one fails.
+    EXPECT_EQ(a.method.order(a.method.tolerance), p.order) << audit::describe(a);
+    EXPECT_EQ(a.order_verdict, audit::order_agreement::exact) << audit::describe(a);
+    if (p.order < 10) EXPECT_GT(a.method.residual[std::size_t(p.order)], 1e-6) << audit::describe(a);
+    EXPECT_LE(a.method.row_sum, a.method.tolerance);
+    EXPECT_EQ(a.method.stage_order, p.stage_order);
+    EXPECT_EQ(a.method.symplectic <= a.method.tolerance, p.symplectic) << a.method.symplectic;
+    if (p.embedding_order) {
+      ASSERT_TRUE(a.embedding);
+      EXPECT_EQ(a.embedding->order(a.embedding->tolerance), p.embedding_order) << audit::describe(a);
+      EXPECT_EQ(a.embedding_verdict, audit::order_agreement::exact);
+    } else {
+      EXPECT_FALSE(a.embedding);
+    }
+  }
+}
+
+TEST(tableau_audit, gauss_is_symmetric_radau_is_not) {
+  const auto g = audit::analyse(audit::read_tableau(dir / "gauss3.json"));
+  const auto r = audit::analyse(audit::read_tableau(dir / "radau_iia3.json"));
+  EXPECT_LE(g.method.symmetric, g.method.tolerance);
+  EXPECT_GT(r.method.symmetric, 1e-3);
+}
+
+/// x with its 10th significant digit changed (+1 in the 10th place, relative 1e-9 of the
+/// leading digit's place): the perturbation is 10^(e - 9) for x = d.ddd... 10^e.
+mpfr100 tenth_digit_changed(const mpfr100& x) {
+  using std::abs;
+  using std::floor;
+  using std::log10;
+  const mpfr100 e = floor(log10(abs(x)));
+  return x + pow(mpfr100(10), e - 9);
+}
+
+TEST(tableau_audit, contradicts_every_broken_copy_near_1e_10) {
+  for (const auto& p : classical) {
+    SCOPED_TRACE(p.file);
+    auto file = audit::read_tableau(dir / (std::string(p.file) + ".json"));
+    // Break the last nonzero weight b_i (every order condition involves b).
+    std::size_t i = file.tableau.b.size() - 1;
+    while (file.tableau.b[i] == 0) --i;
+    const mpfr100 before = file.tableau.b[i];
+    file.tableau.b[i] = tenth_digit_changed(before);
+    const double change = static_cast<double>(mpfr100(abs(mpfr100(file.tableau.b[i] - before))));
+    const auto a = audit::analyse(file);
+    EXPECT_EQ(a.order_verdict, audit::order_agreement::contradicted) << audit::describe(a);
+    // Order 1 (sum b = 1) is off by exactly the change. Order k's bushy tree by the change
+    // times c_i^(k-1) (its g(t)_i, the row sums holding), so the largest residual of order
+    // k is at least that; no order up to p is off by more than 100 times the change.
+    EXPECT_NEAR(a.method.residual[0], change, 1e-30);
+    EXPECT_GE(change, 1e-11);
+    EXPECT_LE(change, 1e-9);
+    const double ci = static_cast<double>(file.tableau.c[i]);
+    for (int k = 1; k <= p.order; ++k) {
+      EXPECT_GE(a.method.residual[std::size_t(k - 1)], change * std::pow(std::abs(ci), k - 1) * (1 - 1e-12)) << k;
+      EXPECT_LE(a.method.residual[std::size_t(k - 1)], 100 * change) << k;
+    }
+    // "order p to 1e-10": the largest order whose conditions hold to 1e-8 is still p.
+    EXPECT_EQ(a.method.order(1e-8), p.order) << audit::describe(a);
+  }
+  // The same in A: a_21 of RK4 (1/2) changed in its 10th digit breaks order 2 and beyond.
+  auto rk4 = audit::read_tableau(dir / "rk4.json");
+  rk4.tableau.a[1][0] = tenth_digit_changed(rk4.tableau.a[1][0]);
+  const auto a = audit::analyse(rk4);
+  EXPECT_EQ(a.order_verdict, audit::order_agreement::contradicted);
+  EXPECT_LT(a.method.residual[0], a.method.tolerance);
+  EXPECT_GT(a.method.residual[1], 1e-11);
+  EXPECT_LT(a.method.residual[1], 1e-9);
+  EXPECT_NEAR(a.method.row_sum, 1e-10, 1e-25);  // c_2 = 1/2 no longer the row sum
+}
+
+TEST(tableau_audit, the_steppers_of_the_files_have_their_orders_in_double) {
+  // The audit of the tableau's stepper: RK4 and Gauss 2 from their files, order 4 on the
+  // oscillator; Gauss 2 symplectic to rounding, RK4 not.
+  audit::audit_options opt;
+  opt.problems = {"oscillator"};
+  opt.long_run_steps = 0;
+  opt.timing = false;
+  for (const char* name : {"rk4", "gauss2"}) {
+    const auto file = audit::read_tableau(dir / (std::string(name) + ".json"));
+    audit::claims c;
+    c.order = file.order;
+    c.symplectic = file.symplectic;
+    c.symmetric = file.symmetric;
+    const auto s = audit::tableau_stepper<double>(file.name, file.tableau, c, file.path);
+    const auto report = audit::audit_stepper(s, opt);
+    for (const auto& v : report.verdicts)
+      EXPECT_NE(v.result, audit::verdict::outcome::contradicted) << name << " " << v.claim << ": " << v.evidence;
+  }
+}
+
+/// Writes `text` to a temporary file and returns the tableau_error's message for it.
+std::string error_of(const std::string& text) {
+  const fs::path file = fs::temp_directory_path() / "mechcheck_tableau_test.json";
+  std::ofstream(file) << text;
+  try {
+    audit::read_tableau(file);
+  } catch (const audit::tableau_error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(tableau_file, malformed_files_are_typed_errors_naming_the_entry_and_the_value) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases{
+      {R"({"A": [["0","0"],["1"]], "b": ["1/2","1/2"], "c": ["0","1"]})", {"A[1]", "1 entries"}},
+      {R"({"A": [["0","0"],["1","0"]], "b": ["1/2"], "c": ["0","1"]})", {"b has 1 entries"}},
+      {R"({"A": [["0","0"],["1","0"]], "b": ["1/2","1/2"]})", {"c is missing"}},
+      {R"({"A": [["0","0"],["one","0"]], "b": ["1/2","1/2"], "c": ["0","1"]})", {"A[1][0]", "\"one\""}},
+      {R"({"A": [["0","0"],["1","0"]], "b": ["1/2", 0.5], "c": ["0","1"]})", {"b[1]", "0.5", "through double"}},
+      {R"({"A": [["0","0"],["1","0"]], "b": ["1/0","1/2"], "c": ["0","1"]})", {"b[0]", "1/0", "divides by zero"}},
+      {R"({"A": [["0","0"],["1","0"]], "b": ["1/2",null], "c": ["0","1"]})", {"b[1]", "null"}},
+      {R"({"A": [["1","1"],["1","1"]], "b": ["1/2","1/2"], "c": ["1","1"]})", {"singular", "rows 0, 1"}},
+      {R"({"A": [["0","0"],["1","0"]], "b": ["1/2","1/2"], "c": ["0","1"], "order": 0})", {"order = 0"}},
+      {R"([1, 2])", {"not a JSON object"}},
+      {R"({"A": )", {"not JSON"}},
+  };
+  for (const auto& [text, words] : cases) {
+    const std::string what = error_of(text);
+    EXPECT_NE(what.find("mechcheck_tableau_test.json"), std::string::npos) << what;
+    for (const auto& w : words) EXPECT_NE(what.find(w), std::string::npos) << text << "\n -> " << what;
+  }
+  EXPECT_THROW(audit::read_tableau(dir / "no_such_tableau.json"), audit::tableau_error);
+}
+
+TEST(tableau_file, coefficients_are_read_without_double) {
+  // 1/3 as a rational and as a 40-digit decimal: both exact to mpfr100 (far beyond double).
+  const mpfr100 third = audit::parse_coefficient("1/3", "x");
+  EXPECT_LT(abs(mpfr100(third * 3 - 1)), 1e-95);
+  const mpfr100 d = audit::parse_coefficient("0.1234567890123456789012345678901234567890", "x");
+  EXPECT_LT(abs(mpfr100(d - mpfr100("0.1234567890123456789012345678901234567890"))), 1e-95);
+  EXPECT_NE(d, mpfr100(0.1234567890123456789012345678901234567890));
+  EXPECT_EQ(audit::parse_coefficient("-2e-3", "x"), mpfr100("-0.002"));
+  EXPECT_THROW(audit::parse_coefficient("1/3/4", "x"), audit::tableau_error);
+  EXPECT_THROW(audit::parse_coefficient("nan", "x"), audit::tableau_error);
+  EXPECT_THROW(audit::parse_coefficient("", "x"), audit::tableau_error);
+}
+
+}  // namespace tableau_test

@@ -1,0 +1,35 @@
+// Tableaus from files (--tableau FILE): each one's stepper through mechcheck's Runge-Kutta
+// stepper, named tableau::<name> (and tableau::<name>/embedding for a file with bhat),
+// declaring what the file declares.
+#include "mechcheck/audit/tableau.hpp"
+#include "mechcheck/audit/tableau_file.hpp"
+#include "run_family.hpp"
+
+namespace mechcheck::audit_tool {
+namespace {
+template <class T>
+std::vector<audit::stepper_under_audit<T>> steppers_of(const std::vector<audit::tableau_file>& files) {
+  std::vector<audit::stepper_under_audit<T>> out;
+  for (const auto& f : files)
+    for (const bool embedding : {false, true}) {
+      if (embedding && f.bhat.empty()) continue;
+      butcher_tableau<mpfr100> t = f.tableau;
+      if (embedding) t.b = f.bhat;
+      audit::claims c;
+      c.order = embedding ? f.embedding_order : f.order;
+      if (!embedding) {
+        c.symplectic = f.symplectic;
+        c.symmetric = f.symmetric;
+      }
+      out.push_back(audit::tableau_stepper<T>(
+          "tableau::" + f.name + (embedding ? "/embedding" : ""), t, c,
+          f.path + (f.source.empty() ? "" : " (" + f.source + ")") +
+              (embedding ? ", its embedding bhat" : "")));
+    }
+  return out;
+}
+}  // namespace
+
+family_result tableau_double(const request& r) { return run_family(steppers_of<double>(r.tableaus), r); }
+family_result tableau_mpfr50(const request& r) { return run_family(steppers_of<mpfr50>(r.tableaus), r); }
+}  // namespace mechcheck::audit_tool
