@@ -11,6 +11,8 @@
 #include <fnmatch.h>
 
 #include "families.hpp"
+#include "run_family.hpp"
+#include "mechcheck/audit/drivers.hpp"
 #include "mechcheck/audit/report.hpp"
 #include "mechcheck/audit/tableau_file.hpp"
 
@@ -65,6 +67,11 @@ int main(int argc, char** argv) {
                  "conditions up to order 10 in mpfr100, then its stepper audited as "
                  "tableau::<name>; with no --stepper only the tableaus are audited")
       ->check(CLI::ExistingFile);
+  std::vector<std::string> driver_patterns;
+  app.add_option("--driver", driver_patterns,
+                 "adaptive drivers to audit against their tolerances (1e-3 .. 1e-12), as shell "
+                 "patterns (e.g. 'gsl::*', '*'; --list names them); with no --stepper and no "
+                 "--tableau only the drivers are audited");
   CLI11_PARSE(app, argc, argv);
 
   const auto start = clock_type::now();
@@ -84,7 +91,57 @@ int main(int argc, char** argv) {
     }
     if (!list) std::cout << audit::describe(analyses.back()) << "\n";
   }
-  if (!tableau_files.empty() && steppers.empty()) request.patterns = {"tableau::*"};
+  if (!tableau_files.empty()) request.patterns.push_back("tableau::*");  // alone: only them
+  const bool drivers_only = !driver_patterns.empty() && steppers.empty() && tableau_files.empty();
+
+  // The adaptive drivers (double).
+  std::vector<audit::adaptive_driver> drivers;
+  if (!driver_patterns.empty()) {
+    for (auto& d : audit::odeint_drivers()) drivers.push_back(std::move(d));
+#ifdef MECHCHECK_HAVE_GSL
+    for (auto& d : audit_tool::gsl_drivers()) drivers.push_back(std::move(d));
+#endif
+#ifdef MECHCHECK_HAVE_ARKODE
+    for (auto& d : audit_tool::sundials_drivers()) drivers.push_back(std::move(d));
+#endif
+    std::erase_if(drivers, [&](const audit::adaptive_driver& d) {
+      return !audit_tool::matches(driver_patterns, d.name);
+    });
+    if (drivers.empty()) {
+      std::cerr << "mechcheck-audit: no driver matches the --driver patterns given\n";
+      return 1;
+    }
+  }
+  std::vector<audit::driver_audit> driver_audits;
+  if (list) {
+    for (const auto& d : drivers) std::cout << d.name << " [driver, double]\n";
+  } else if (!drivers.empty()) {
+    const double t0 = elapsed();
+    audit::driver_options dopt;
+    dopt.problems = problems;
+    dopt.timing = timing;
+    if (!quiet)
+      dopt.progress = [&](const std::string& what) { std::fprintf(stderr, "[%7.1f s] %s\n", elapsed(), what.c_str()); };
+    for (const auto& d : drivers) driver_audits.push_back(audit::audit_driver(d, dopt));
+    audit::print_drivers(std::cout, driver_audits);
+    if (!quiet) std::fprintf(stderr, "[%7.1f s] drivers done in %.1f s\n", elapsed(), elapsed() - t0);
+  }
+  if (drivers_only) {
+    if (list) return 0;
+    try {
+      const auto written = audit::write_driver_report(output, driver_audits,
+                                                      long_run_problems.empty() ? "kepler_e0.5" : long_run_problems.front(),
+                                                      timing);
+      std::cout << "\nwrote";
+      for (const auto& w : written) std::cout << " " << w;
+      std::cout << "\n";
+    } catch (const std::exception& e) {
+      std::cerr << "mechcheck-audit: " << e.what() << "\n";
+      return 1;
+    }
+    std::cout << "audited " << driver_audits.size() << " drivers in " << static_cast<long>(elapsed() + 0.5) << " s\n";
+    return 0;
+  }
   request.list_only = list;
   request.newton_tolerance = newton_tolerance;
   request.options.problems = problems;
@@ -142,6 +199,9 @@ int main(int argc, char** argv) {
   audit::print_table(std::cout, audits, report);
   try {
     auto written = audit::write_report(output, audits, report);
+    if (!driver_audits.empty())
+      for (const auto& w : audit::write_driver_report(output, driver_audits, report.long_run_problem, timing))
+        written.push_back(w);
     if (!analyses.empty()) {
       for (const auto& w : audit::write_tableau_report(output, analyses)) written.push_back(w);
     }

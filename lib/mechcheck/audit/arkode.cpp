@@ -4,10 +4,12 @@
 #include <arkode/arkode_butcher_dirk.h>
 #include <arkode/arkode_butcher_erk.h>
 #include <arkode/arkode_erkstep.h>
+#include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_config.h>
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_dense.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <cstdlib>
@@ -240,6 +242,143 @@ std::vector<black_box> steppers(const std::vector<butcher_table>& ts, double new
       b.destroy = [](void* ctx) { delete static_cast<run*>(ctx); };
       out.push_back(std::move(b));
     }
+  return out;
+}
+
+namespace {
+/// The SUNDIALS objects of one adaptive run, freed in any case.
+struct adaptive_run {
+  const ode_system* ode = nullptr;
+  std::string name, message;
+  N_Vector y = nullptr;
+  void* mem = nullptr;
+  bool cvode = false;
+  SUNMatrix matrix = nullptr;
+  SUNLinearSolver solver = nullptr;
+  SUNNonlinearSolver nonlinear = nullptr;
+  ~adaptive_run() {
+    if (mem) cvode ? CVodeFree(&mem) : ERKStepFree(&mem);
+    if (nonlinear) SUNNonlinSolFree(nonlinear);
+    if (solver) SUNLinSolFree(solver);
+    if (matrix) SUNMatDestroy(matrix);
+    if (y) N_VDestroy(y);
+  }
+  void check(int flag, const char* call) const {
+    if (flag >= 0) return;
+    const std::unique_ptr<char, decltype(&std::free)> flag_name(
+        cvode ? CVodeGetReturnFlagName(flag) : ERKStepGetReturnFlagName(flag), &std::free);
+    throw convergence_error(name + ": " + call + " returned " + std::to_string(flag) + " (" +
+                            (flag_name ? flag_name.get() : "?") + ")" +
+                            (message.empty() ? "" : ": " + message));
+  }
+};
+
+int adaptive_rhs(realtype t, N_Vector y, N_Vector ydot, void* user) {
+  const auto* r = static_cast<adaptive_run*>(user);
+  return r->ode->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), r->ode->self) == 0 ? 0 : -1;
+}
+int adaptive_jac(realtype t, N_Vector y, N_Vector, SUNMatrix j, void* user, N_Vector, N_Vector, N_Vector) {
+  const auto* r = static_cast<adaptive_run*>(user);
+  const int n = r->ode->dimension;
+  std::vector<double> dfdy(std::size_t(n * n));
+  if (r->ode->jacobian(t, N_VGetArrayPointer(y), dfdy.data(), r->ode->self) != 0) return -1;
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < n; ++k) SM_ELEMENT_D(j, i, k) = dfdy[std::size_t(i * n + k)];
+  return 0;
+}
+void adaptive_errors(int, const char* module, const char* function, char* msg, void* user) {
+  static_cast<adaptive_run*>(user)->message =
+      std::string(module ? module : "?") + " " + (function ? function : "?") + ": " + (msg ? msg : "");
+}
+constexpr long max_steps = 10000000;
+
+driver_statistics cvode(int lmm, const std::string& name, const ode_system& ode, double* y,
+                        double t0, double t1, double tol) {
+  adaptive_run r;
+  r.ode = &ode;
+  r.name = name;
+  r.cvode = true;
+  r.y = N_VNew_Serial(ode.dimension, context());
+  std::copy(y, y + ode.dimension, N_VGetArrayPointer(r.y));
+  r.mem = CVodeCreate(lmm, context());
+  if (!r.mem) throw error(name + ": CVodeCreate failed");
+  r.check(CVodeSetErrHandlerFn(r.mem, &adaptive_errors, &r), "CVodeSetErrHandlerFn");
+  r.check(CVodeInit(r.mem, &adaptive_rhs, t0, r.y), "CVodeInit");
+  r.check(CVodeSetUserData(r.mem, &r), "CVodeSetUserData");
+  r.check(CVodeSStolerances(r.mem, tol, tol), "CVodeSStolerances");
+  r.check(CVodeSetMaxNumSteps(r.mem, max_steps), "CVodeSetMaxNumSteps");
+  r.check(CVodeSetStopTime(r.mem, t1), "CVodeSetStopTime");
+  if (lmm == CV_BDF) {
+    r.matrix = SUNDenseMatrix(ode.dimension, ode.dimension, context());
+    r.solver = SUNLinSol_Dense(r.y, r.matrix, context());
+    r.check(CVodeSetLinearSolver(r.mem, r.solver, r.matrix), "CVodeSetLinearSolver");
+    r.check(CVodeSetJacFn(r.mem, &adaptive_jac), "CVodeSetJacFn");
+  } else {
+    r.nonlinear = SUNNonlinSol_FixedPoint(r.y, 0, context());
+    r.check(CVodeSetNonlinearSolver(r.mem, r.nonlinear), "CVodeSetNonlinearSolver");
+  }
+  realtype t = t0;
+  r.check(CVode(r.mem, t1, r.y, &t, CV_NORMAL), "CVode");
+  long steps = 0, fails = 0;
+  r.check(CVodeGetNumSteps(r.mem, &steps), "CVodeGetNumSteps");
+  r.check(CVodeGetNumErrTestFails(r.mem, &fails), "CVodeGetNumErrTestFails");
+  std::copy(N_VGetArrayPointer(r.y), N_VGetArrayPointer(r.y) + ode.dimension, y);
+  return {steps, fails};
+}
+
+driver_statistics erkstep(const std::string& name, const ode_system& ode, double* y, double t0,
+                          double t1, double tol) {
+  adaptive_run r;
+  r.ode = &ode;
+  r.name = name;
+  r.y = N_VNew_Serial(ode.dimension, context());
+  std::copy(y, y + ode.dimension, N_VGetArrayPointer(r.y));
+  r.mem = ERKStepCreate(&adaptive_rhs, t0, r.y, context());
+  if (!r.mem) throw error(name + ": ERKStepCreate failed");
+  r.check(ERKStepSetErrHandlerFn(r.mem, &adaptive_errors, &r), "ERKStepSetErrHandlerFn");
+  r.check(ERKStepSetUserData(r.mem, &r), "ERKStepSetUserData");
+  r.check(ERKStepSStolerances(r.mem, tol, tol), "ERKStepSStolerances");
+  r.check(ERKStepSetMaxNumSteps(r.mem, max_steps), "ERKStepSetMaxNumSteps");
+  r.check(ERKStepSetStopTime(r.mem, t1), "ERKStepSetStopTime");
+  realtype t = t0;
+  r.check(ERKStepEvolve(r.mem, t1, r.y, &t, ARK_NORMAL), "ERKStepEvolve");
+  long steps = 0, fails = 0;
+  r.check(ERKStepGetNumSteps(r.mem, &steps), "ERKStepGetNumSteps");
+  r.check(ERKStepGetNumErrTestFails(r.mem, &fails), "ERKStepGetNumErrTestFails");
+  std::copy(N_VGetArrayPointer(r.y), N_VGetArrayPointer(r.y) + ode.dimension, y);
+  return {steps, fails};
+}
+}  // namespace
+
+std::vector<adaptive_driver> drivers() {
+  std::vector<adaptive_driver> out;
+  const std::string v = "SUNDIALS " + version();
+  adaptive_driver bdf;
+  bdf.name = "cvode::BDF";
+  bdf.origin = v + " CVODE, CV_BDF with Newton iteration and a dense linear solver (Jacobian by AD), "
+                   "CVodeSStolerances(tol, tol), CVodeSetStopTime(t_end); the guide: \"variable-order, "
+                   "variable-step BDF methods\" of orders 1 to 5 for stiff problems";
+  bdf.integrate = [name = bdf.name](const ode_system& ode, double* y, double t0, double t1, double tol) {
+    return cvode(CV_BDF, name, ode, y, t0, t1, tol);
+  };
+  out.push_back(std::move(bdf));
+  adaptive_driver adams;
+  adams.name = "cvode::Adams";
+  adams.origin = v + " CVODE, CV_ADAMS with fixed-point iteration, CVodeSStolerances(tol, tol), "
+                     "CVodeSetStopTime(t_end); the guide: Adams-Moulton formulas of orders 1 to 12 "
+                     "for nonstiff problems";
+  adams.integrate = [name = adams.name](const ode_system& ode, double* y, double t0, double t1, double tol) {
+    return cvode(CV_ADAMS, name, ode, y, t0, t1, tol);
+  };
+  out.push_back(std::move(adams));
+  adaptive_driver erk;
+  erk.name = "arkode::ERKStep_default";
+  erk.origin = v + " ARKODE ERKStep with its defaults (order 4: ARKODE_ZONNEVELD_5_3_4, the "
+                   "PID controller), ERKStepSStolerances(tol, tol), ERKStepSetStopTime(t_end)";
+  erk.integrate = [name = erk.name](const ode_system& ode, double* y, double t0, double t1, double tol) {
+    return erkstep(name, ode, y, t0, t1, tol);
+  };
+  out.push_back(std::move(erk));
   return out;
 }
 

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "mechcheck/audit/black_box.hpp"
+#include "mechcheck/audit/drivers.hpp"
 
 namespace mechcheck::audit::arkode {
 
@@ -46,5 +47,11 @@ inline constexpr double default_newton_tolerance = 1e-14;
 /// The tables run by ARKODE: arkode::<name> (method) and arkode::<name>/embedding.
 std::vector<black_box> steppers(const std::vector<butcher_table>& tables,
                                 double newton_tolerance = default_newton_tolerance);
+
+/// SUNDIALS' adaptive drivers: CVODE with BDF (Newton, dense solver, Jacobian by AD) and
+/// with Adams (fixed-point iteration), named cvode::BDF and cvode::Adams, and ARKODE's
+/// ERKStep with its defaults, arkode::ERKStep_default; atol = rtol = tol, a stop time at
+/// t_end, at most 10^7 steps.
+std::vector<adaptive_driver> drivers();
 
 }  // namespace mechcheck::audit::arkode

@@ -56,18 +56,84 @@ struct black_box {
 };
 
 namespace detail {
+/// The C view of an erased_system<double> with state y = (q, p): an ode_system whose
+/// right-hand side counts as one evaluation and whose Jacobian is by forward AD (not
+/// counted). A callback's exception is kept (`failure`) and reported as a nonzero status.
+class c_view {
+ public:
+  c_view(const erased_system<double>& system, Eigen::Index nq, Eigen::Index np)
+      : system_(system), nq_(nq), np_(np) {
+    ode_.dimension = static_cast<int>(nq + np);
+    ode_.rhs = &rhs;
+    ode_.jacobian = &jacobian;
+    ode_.self = this;
+  }
+  c_view(const c_view&) = delete;
+  c_view& operator=(const c_view&) = delete;
+
+  const ode_system& ode() const { return ode_; }
+  Eigen::Index nq() const { return nq_; }
+  Eigen::Index np() const { return np_; }
+  /// The message of the last callback that failed ("" if none); clear_failure() resets it.
+  const std::string& failure() const { return error_; }
+  void clear_failure() { error_.clear(); }
+  /// Jacobian evaluations since construction.
+  long long jacobians() const { return jacobians_; }
+
+ private:
+  static int rhs(double, const double* y, double* dydt, void* self) {
+    auto* v = static_cast<c_view*>(self);
+    try {
+      dynamic_vector<double> q = Eigen::Map<const dynamic_vector<double>>(y, v->nq_);
+      dynamic_vector<double> p = Eigen::Map<const dynamic_vector<double>>(y + v->nq_, v->np_);
+      dynamic_vector<double> dq = q, dp = p;
+      v->system_.vector_field(q, p, dq, dp);
+      std::copy(dq.data(), dq.data() + v->nq_, dydt);
+      std::copy(dp.data(), dp.data() + v->np_, dydt + v->nq_);
+      return 0;
+    } catch (const std::exception& e) {
+      v->error_ = std::string("the right-hand side failed: ") + e.what();
+      return -1;
+    }
+  }
+  static int jacobian(double, const double* y, double* dfdy, void* self) {
+    auto* v = static_cast<c_view*>(self);
+    try {
+      ++v->jacobians_;
+      const Eigen::Index n = v->nq_ + v->np_;
+      const dynamic_vector<double> z = Eigen::Map<const dynamic_vector<double>>(y, n);
+      const auto field = [v]<class S>(const dynamic_vector<S>& w) -> dynamic_vector<S> {
+        dynamic_vector<S> q = w.head(v->nq_), p = w.tail(v->np_), dq = q, dp = p;
+        v->system_.vector_field_uncounted(q, p, dq, dp);
+        dynamic_vector<S> out(w.size());
+        out << dq, dp;
+        return out;
+      };
+      const dynamic_matrix<double> j = mechcheck::jacobian(field, z);
+      for (Eigen::Index r = 0; r < n; ++r)
+        for (Eigen::Index c = 0; c < n; ++c) dfdy[r * n + c] = j(r, c);
+      return 0;
+    } catch (const std::exception& e) {
+      v->error_ = std::string("the Jacobian failed: ") + e.what();
+      return -1;
+    }
+  }
+
+  erased_system<double> system_;
+  Eigen::Index nq_, np_;
+  ode_system ode_;
+  long long jacobians_ = 0;
+  std::string error_;
+};
+
 /// One run of a black box on one problem: its C view of the system and its context.
 class black_box_run {
  public:
   black_box_run(const black_box& box, const erased_system<double>& system, Eigen::Index nq,
                 Eigen::Index np)
-      : box_(box), system_(system), nq_(nq), np_(np) {
-    ode_.dimension = static_cast<int>(nq + np);
-    ode_.rhs = &rhs;
-    ode_.jacobian = &jacobian;
-    ode_.self = this;
-    context_ = box_.create ? box_.create(ode_) : nullptr;
-    if (!error_.empty()) throw error(box_.name + ": creating its context: " + error_);
+      : box_(box), view_(system, nq, np) {
+    context_ = box_.create ? box_.create(view_.ode()) : nullptr;
+    if (!view_.failure().empty()) throw error(box_.name + ": creating its context: " + view_.failure());
   }
   ~black_box_run() {
     if (box_.destroy) box_.destroy(context_);
@@ -81,73 +147,34 @@ class black_box_run {
                              to_text(h));
     require_finite_vector(x.q, box_.name, "q");
     require_finite_vector(x.p, box_.name, "p");
-    y_.resize(static_cast<std::size_t>(nq_ + np_));
-    std::copy(x.q.data(), x.q.data() + nq_, y_.data());
-    std::copy(x.p.data(), x.p.data() + np_, y_.data() + nq_);
+    const Eigen::Index nq = view_.nq(), np = view_.np();
+    y_.resize(static_cast<std::size_t>(nq + np));
+    std::copy(x.q.data(), x.q.data() + nq, y_.data());
+    std::copy(x.p.data(), x.p.data() + np, y_.data() + nq);
     ++steps_;
-    error_.clear();
+    view_.clear_failure();
     box_.step(y_.data(), t_, h, context_);
-    if (!error_.empty())
+    if (!view_.failure().empty())
       throw error(box_.name + ": step " + std::to_string(steps_) + " at t = " + to_text(t_) +
-                  ", h = " + to_text(h) + ": " + error_);
+                  ", h = " + to_text(h) + ": " + view_.failure());
     for (std::size_t i = 0; i < y_.size(); ++i)
       if (!std::isfinite(y_[i]))
         throw non_finite_error(box_.name + ": step " + std::to_string(steps_) + " at t = " +
                                to_text(t_) + ", h = " + to_text(h) + " left y[" +
                                std::to_string(i) + "] = " + to_text(y_[i]) + " from q = " +
                                to_text(x.q) + ", p = " + to_text(x.p));
-    std::copy(y_.data(), y_.data() + nq_, x.q.data());
-    std::copy(y_.data() + nq_, y_.data() + nq_ + np_, x.p.data());
+    std::copy(y_.data(), y_.data() + nq, x.q.data());
+    std::copy(y_.data() + nq, y_.data() + nq + np, x.p.data());
     t_ += h;
   }
 
  private:
-  static int rhs(double, const double* y, double* dydt, void* self) {
-    auto* run = static_cast<black_box_run*>(self);
-    try {
-      dynamic_vector<double> q = Eigen::Map<const dynamic_vector<double>>(y, run->nq_);
-      dynamic_vector<double> p = Eigen::Map<const dynamic_vector<double>>(y + run->nq_, run->np_);
-      dynamic_vector<double> dq = q, dp = p;
-      run->system_.vector_field(q, p, dq, dp);
-      std::copy(dq.data(), dq.data() + run->nq_, dydt);
-      std::copy(dp.data(), dp.data() + run->np_, dydt + run->nq_);
-      return 0;
-    } catch (const std::exception& e) {
-      run->error_ = std::string("the right-hand side failed: ") + e.what();
-      return -1;
-    }
-  }
-  static int jacobian(double, const double* y, double* dfdy, void* self) {
-    auto* run = static_cast<black_box_run*>(self);
-    try {
-      const Eigen::Index n = run->nq_ + run->np_;
-      const dynamic_vector<double> z = Eigen::Map<const dynamic_vector<double>>(y, n);
-      const auto field = [run]<class S>(const dynamic_vector<S>& w) -> dynamic_vector<S> {
-        dynamic_vector<S> q = w.head(run->nq_), p = w.tail(run->np_), dq = q, dp = p;
-        run->system_.vector_field_uncounted(q, p, dq, dp);
-        dynamic_vector<S> out(w.size());
-        out << dq, dp;
-        return out;
-      };
-      const dynamic_matrix<double> j = mechcheck::jacobian(field, z);
-      for (Eigen::Index r = 0; r < n; ++r)
-        for (Eigen::Index c = 0; c < n; ++c) dfdy[r * n + c] = j(r, c);
-      return 0;
-    } catch (const std::exception& e) {
-      run->error_ = std::string("the Jacobian failed: ") + e.what();
-      return -1;
-    }
-  }
-
   const black_box& box_;
-  erased_system<double> system_;
-  Eigen::Index nq_, np_;
-  ode_system ode_;
+  c_view view_;
   void* context_ = nullptr;
   std::vector<double> y_;
   double t_ = 0;
   long long steps_ = 0;
-  std::string error_;
 };
 }  // namespace detail
 

@@ -4,6 +4,8 @@
 #include <gsl/gsl_odeiv2.h>
 #include <gsl/gsl_version.h>
 
+#include <memory>
+
 namespace mechcheck::audit::gsl {
 
 namespace {
@@ -123,6 +125,68 @@ std::vector<black_box> one_step_types(double newton_tolerance) {
       delete c;
     };
     out.push_back(std::move(b));
+  }
+  return out;
+}
+
+namespace {
+/// The GSL manual's words for the types audited only through the driver.
+struct driver_type {
+  const char* name;
+  const gsl_odeiv2_step_type* const* type;
+  const char* manual;
+};
+
+int driver_rhs(double t, const double y[], double dydt[], void* self) {
+  const auto* ode = static_cast<const ode_system*>(self);
+  return ode->rhs(t, y, dydt, ode->self) == 0 ? GSL_SUCCESS : GSL_EBADFUNC;
+}
+int driver_jacobian(double t, const double y[], double* dfdy, double dfdt[], void* self) {
+  const auto* ode = static_cast<const ode_system*>(self);
+  for (int i = 0; i < ode->dimension; ++i) dfdt[i] = 0;  // autonomous problems
+  return ode->jacobian(t, y, dfdy, ode->self) == 0 ? GSL_SUCCESS : GSL_EBADFUNC;
+}
+}  // namespace
+
+std::vector<adaptive_driver> drivers() {
+  handler_off();
+  static const std::vector<driver_type> types{
+      {"rkf45", &gsl_odeiv2_step_rkf45, "Explicit embedded Runge-Kutta-Fehlberg (4, 5) method. This method is a good general-purpose integrator."},
+      {"rkck", &gsl_odeiv2_step_rkck, "Explicit embedded Runge-Kutta Cash-Karp (4, 5) method."},
+      {"rk8pd", &gsl_odeiv2_step_rk8pd, "Explicit embedded Runge-Kutta Prince-Dormand (8, 9) method."},
+      {"msadams", &gsl_odeiv2_step_msadams, "A variable-coefficient linear multistep Adams method in Nordsieck form. This stepper uses explicit Adams-Bashforth (predictor) and implicit Adams-Moulton (corrector) methods in P(EC)^m functional iteration mode. Method order varies dynamically between 1 and 12."},
+      {"msbdf", &gsl_odeiv2_step_msbdf, "A variable-coefficient linear multistep backward differentiation formula (BDF) method in Nordsieck form. This stepper uses the explicit BDF formula as predictor and implicit BDF formula as corrector. A modified Newton iteration method is used to solve the system of non-linear equations. Method order varies dynamically between 1 and 5."},
+      {"bsimp", &gsl_odeiv2_step_bsimp, "Implicit Bulirsch-Stoer method of Bader and Deuflhard. The method is generally suitable for stiff problems."},
+  };
+  std::vector<adaptive_driver> out;
+  for (const driver_type& t : types) {
+    adaptive_driver d;
+    d.name = std::string("gsl::driver_") + t.name;
+    d.origin = "GSL " + version() + " gsl_odeiv2_driver_alloc_y_new(sys, gsl_odeiv2_step_" + t.name +
+               ", hstart = 1e-3 (t1 - t0), tol, tol) and gsl_odeiv2_driver_apply, the Jacobian by AD; "
+               "manual: \"" + t.manual + "\"";
+    const driver_type* type = &t;
+    d.integrate = [type, name = d.name](const ode_system& ode, double* y, double t0, double t1,
+                                        double tol) -> driver_statistics {
+      gsl_odeiv2_system sys{&driver_rhs, &driver_jacobian, static_cast<size_t>(ode.dimension),
+                            const_cast<ode_system*>(&ode)};
+      const std::unique_ptr<gsl_odeiv2_driver, decltype(&gsl_odeiv2_driver_free)> driver(
+          gsl_odeiv2_driver_alloc_y_new(&sys, *type->type, 1e-3 * (t1 - t0), tol, tol),
+          &gsl_odeiv2_driver_free);
+      if (!driver) throw error(name + ": gsl_odeiv2_driver_alloc_y_new failed");
+      constexpr unsigned long limit = 10000000;
+      gsl_odeiv2_driver_set_nmax(driver.get(), limit);
+      double t = t0;
+      const int status = gsl_odeiv2_driver_apply(driver.get(), &t, t1, y);
+      if (status != GSL_SUCCESS)
+        throw convergence_error(name + ": gsl_odeiv2_driver_apply returned " + std::to_string(status) +
+                                " (" + gsl_strerror(status) + ") at t = " + to_text(t) + " of " +
+                                to_text(t1) + ", tol = " + to_text(tol) +
+                                (status == GSL_EMAXITER ? " (" + std::to_string(limit) + " steps)" : ""));
+      return {static_cast<long long>(driver->e->count) - static_cast<long long>(driver->e->failed_steps),
+              static_cast<long long>(driver->e->failed_steps)};
+    };
+    out.push_back(std::move(d));
   }
   return out;
 }

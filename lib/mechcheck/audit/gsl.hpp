@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "mechcheck/audit/black_box.hpp"
+#include "mechcheck/audit/drivers.hpp"
 
 namespace mechcheck::audit::gsl {
 
@@ -32,5 +33,10 @@ inline constexpr double default_newton_tolerance = 1e-10;
 
 /// Every one-step type, named gsl::<type>.
 std::vector<black_box> one_step_types(double newton_tolerance = default_newton_tolerance);
+
+/// GSL's adaptive driver (gsl_odeiv2_driver, standard control y_new with epsabs = epsrel =
+/// tol) with rkf45, rkck, rk8pd, msadams, msbdf and bsimp, named gsl::driver_<type>;
+/// accepted steps are the evolve count less its failed steps, rejected the failed steps.
+std::vector<adaptive_driver> drivers();
 
 }  // namespace mechcheck::audit::gsl
