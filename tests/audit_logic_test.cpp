@@ -157,6 +157,17 @@ TEST(audit_studies, an_error_that_converges_to_a_wrong_limit_is_a_stall) {
   synthetic moving = s;
   moving.change = [=](double h) { return s.error(h) / 7; };
   EXPECT_FALSE(moving.run().stalled);
+  // A limit at distance 1 is a stall as well (a wrong sign in a force converges to the
+  // wrong motion, at an error of order one); runs that still differ by 1/10 or more are not
+  // converged, whatever their ratio.
+  synthetic far = s;
+  far.error = [=](double h) { return std::hypot(c * std::pow(h, 3), 1.0); };
+  const auto wrong = far.run();
+  ASSERT_TRUE(wrong.stalled);
+  EXPECT_NEAR(wrong.stalled->error, 1.0, 1e-6);
+  synthetic apart = far;
+  apart.change = [](double) { return 0.1; };
+  EXPECT_FALSE(apart.run().stalled);
 }
 
 TEST(audit_studies, failed_and_diverged_runs_are_skipped_with_a_note) {

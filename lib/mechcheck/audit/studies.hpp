@@ -100,7 +100,7 @@ inline double rounding_floor(double eps, double evaluations) {
 }
 inline constexpr double floor_margin = 100;
 /// A stall: at the study's finest run the error is at least floor_margin floors and at
-/// least stall_ratio times the change from the previous run. A converging method of order
+/// least stall_ratio times the change from the previous run, which is below 1/10. A converging method of order
 /// p has error ~ change / (2^p - 1) <= change there; a method converging to a wrong limit
 /// at distance S has error ~ S and change ~ C h^p -> 0.
 inline constexpr double stall_ratio = 8;
@@ -146,7 +146,9 @@ order_study halving_study(Run&& run, long n0, long max_steps, double eps,
   if (!study.points.empty()) {
     const study_point& last = study.points.back();
     const double floor = rounding_floor(eps, last.evaluations);
-    if (last.change >= 0 && last.error < 0.1 && last.error >= floor_margin * floor &&
+    // The runs agree (their change below 1/10) while the error stays: a wrong limit,
+    // however far (a limit at distance 1 is a stall too, not an unresolved study).
+    if (last.change >= 0 && last.change < 0.1 && last.error >= floor_margin * floor &&
         last.error >= stall_ratio * last.change)
       study.stalled = stall{last.h, last.error, last.change, floor, last.error / floor};
   }
