@@ -13,6 +13,10 @@
 #include "families.hpp"
 #include "run_family.hpp"
 #include "mechcheck/audit/drivers.hpp"
+#include "mechcheck/audit/engines.hpp"
+#ifdef MECHCHECK_HAVE_MUJOCO
+#include "mechcheck/audit/mujoco.hpp"
+#endif
 #include "mechcheck/audit/report.hpp"
 #include "mechcheck/audit/tableau_file.hpp"
 
@@ -72,6 +76,11 @@ int main(int argc, char** argv) {
                  "adaptive drivers to audit against their tolerances (1e-3 .. 1e-12), as shell "
                  "patterns (e.g. 'gsl::*', '*'; --list names them); with no --stepper and no "
                  "--tableau only the drivers are audited");
+  std::vector<std::string> engine_patterns;
+  app.add_option("--engine", engine_patterns,
+                 "physics-engine integrators to audit on the scenarios with exact references, "
+                 "as shell patterns (e.g. 'mujoco::*'); with no --stepper, --tableau or --driver "
+                 "only the engines are audited");
   CLI11_PARSE(app, argc, argv);
 
   const auto start = clock_type::now();
@@ -92,6 +101,44 @@ int main(int argc, char** argv) {
     if (!list) std::cout << audit::describe(analyses.back()) << "\n";
   }
   if (!tableau_files.empty()) request.patterns.push_back("tableau::*");  // alone: only them
+  if (!engine_patterns.empty()) {
+    std::vector<audit::engine_integrator> engines;
+#ifdef MECHCHECK_HAVE_MUJOCO
+    for (auto& e : audit::mujoco::integrators()) engines.push_back(std::move(e));
+#endif
+    std::erase_if(engines, [&](const audit::engine_integrator& e) {
+      return !audit_tool::matches(engine_patterns, e.name);
+    });
+    if (engines.empty()) {
+      std::cerr << "mechcheck-audit: no engine integrator matches the --engine patterns given\n";
+      return 1;
+    }
+    std::vector<audit::engine_audit> engine_audits;
+    for (const auto& e : engines) {
+      if (list) {
+        std::cout << e.name << " [engine, double]\n";
+        continue;
+      }
+      audit::engine_options eopt;
+      if (!quiet) eopt.progress = [&](const std::string& what) { std::fprintf(stderr, "[%7.1f s] %s\n", elapsed(), what.c_str()); };
+      engine_audits.push_back(audit::audit_engine(e, eopt));
+    }
+    if (!list) {
+      audit::print_engines(std::cout, engine_audits);
+      try {
+        const auto written = audit::write_engine_report(output, engine_audits);
+        std::cout << "\nwrote";
+        for (const auto& w : written) std::cout << " " << w;
+        std::cout << "\n";
+      } catch (const std::exception& ex) {
+        std::cerr << "mechcheck-audit: " << ex.what() << "\n";
+        return 1;
+      }
+      std::cout << "audited " << engine_audits.size() << " engine integrators in "
+                << static_cast<long>(elapsed() + 0.5) << " s\n";
+    }
+    if (steppers.empty() && tableau_files.empty() && driver_patterns.empty()) return 0;
+  }
   const bool drivers_only = !driver_patterns.empty() && steppers.empty() && tableau_files.empty();
 
   // The adaptive drivers (double).
