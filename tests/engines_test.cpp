@@ -14,6 +14,15 @@
 #ifdef MECHCHECK_HAVE_MUJOCO
 #include "mechcheck/audit/mujoco.hpp"
 #endif
+#ifdef MECHCHECK_HAVE_SIMBODY
+#include "mechcheck/audit/simbody.hpp"
+#endif
+#ifdef MECHCHECK_HAVE_BULLET
+#include "mechcheck/audit/bullet.hpp"
+#endif
+#ifdef MECHCHECK_HAVE_ODE
+#include "mechcheck/audit/ode_engine.hpp"
+#endif
 
 namespace engines_test {
 using namespace mechcheck;
@@ -162,6 +171,94 @@ TEST(engines, explicit_euler_declared_second_order_is_contradicted_and_gains_ene
   ASSERT_TRUE(a.scenarios[0].energy_growth);
   EXPECT_GT(*a.scenarios[0].energy_growth, 0.75);  // explicit Euler: energy grows
 }
+
+/// Every engine integrator of the engines found.
+std::vector<audit::engine_integrator> every_engine() {
+  std::vector<audit::engine_integrator> all;
+#ifdef MECHCHECK_HAVE_MUJOCO
+  for (auto& e : audit::mujoco::integrators()) all.push_back(std::move(e));
+#endif
+#ifdef MECHCHECK_HAVE_SIMBODY
+  for (auto& e : audit::simbody::integrators()) all.push_back(std::move(e));
+#endif
+#ifdef MECHCHECK_HAVE_BULLET
+  for (auto& e : audit::bullet::integrators()) all.push_back(std::move(e));
+#endif
+#ifdef MECHCHECK_HAVE_ODE
+  for (auto& e : audit::ode_engine::integrators()) all.push_back(std::move(e));
+#endif
+  return all;
+}
+
+TEST(engines, every_adapter_starts_each_scenario_at_its_exact_state) {
+  // The mapping of each scenario to the engine's frames, signs and units, checked where it
+  // is exact: the observables at t = 0 (rounding of the engine's rotation and joint
+  // bookkeeping: 1e-12 of the scale).
+  for (const auto& e : every_engine())
+    for (const auto& s : audit::scenarios()) {
+      const auto run = e.start(s);
+      const Eigen::VectorXd x = run->observe().observables, exact = s.exact(0);
+      ASSERT_EQ(x.size(), exact.size()) << e.name << " " << s.name;
+      EXPECT_LT((x - exact).norm(), 1e-12 * s.scale) << e.name << " " << s.name << ": " << x.transpose()
+                                                      << " against " << exact.transpose();
+    }
+}
+
+TEST(engines, every_adapter_advances_its_clock_by_h_a_step) {
+  // No force along x on the projectile: x(T) = v0x T after n steps of T / n whatever the
+  // integrator -- a step skipped or doubled by the adapter shows as x off by v0x T / n.
+  const auto s = audit::scenarios().back();
+  ASSERT_EQ(s.name, "projectile");
+  // An integrator that refuses the step size (Simbody's CPodes keeps its own error test)
+  // must say so as a typed error naming the step.
+  for (const auto& e : every_engine()) {
+    const auto run = e.start(s);
+    try {
+      for (int i = 0; i < 16; ++i) run->step(s.t_end / 16);
+    } catch (const convergence_error& ex) {
+      EXPECT_NE(std::string(ex.what()).find("step "), std::string::npos) << ex.what();
+      EXPECT_EQ(e.name, "simbody::CPodes") << ex.what();
+      continue;
+    }
+    EXPECT_NEAR(run->observe().observables(0), s.velocity0(0) * s.t_end, 1e-12) << e.name;
+  }
+}
+
+#ifdef MECHCHECK_HAVE_SIMBODY
+TEST(simbody, verlet_and_feldberg_are_of_lower_order_than_their_headers_say) {
+  // VerletIntegrator.h: "a third order, semi-explicit integrator": 2.00 on the pendulum;
+  // RungeKuttaFeldbergIntegrator.h: "fifth order": 4.00 (it propagates the 4th-order
+  // solution); RungeKuttaMerson's "fourth order" holds.
+  audit::engine_options opt;
+  opt.scenarios = {"pendulum_small"};
+  opt.long_run_steps = 0;
+  for (const auto& e : audit::simbody::integrators()) {
+    if (e.name != "simbody::Verlet" && e.name != "simbody::RungeKuttaFeldberg" && e.name != "simbody::RungeKuttaMerson")
+      continue;
+    const auto a = audit::audit_engine(e, opt);
+    const double expected = e.name == "simbody::Verlet" ? 2 : 4;
+    EXPECT_NEAR(a.scenarios[0].global.fit.value, expected, 0.05) << e.name << ": " << a.order.evidence;
+    EXPECT_EQ(a.order.result, e.name == "simbody::RungeKuttaMerson" ? outcome::confirmed : outcome::contradicted)
+        << e.name << ": " << a.order.evidence;
+  }
+}
+#endif
+
+#if defined(MECHCHECK_HAVE_BULLET) && defined(MECHCHECK_HAVE_ODE)
+TEST(engines, without_the_gyroscopic_term_a_free_top_converges_to_the_wrong_motion) {
+  // Bullet with no gyroscopic flag and ODE with dBodySetGyroscopicMode(0) keep the world
+  // angular velocity constant: the runs agree with each other, not with Euler's equations.
+  audit::engine_options opt;
+  opt.scenarios = {"free_top"};
+  opt.long_run_steps = 0;
+  for (const auto& e : every_engine()) {
+    if (e.name != "bullet::gyroscopic_none" && e.name != "ode::step/no_gyroscopic") continue;
+    const auto a = audit::audit_engine(e, opt);
+    ASSERT_TRUE(a.scenarios[0].global.stalled) << e.name;
+    EXPECT_GT(a.scenarios[0].global.stalled->error, 0.5) << e.name;
+  }
+}
+#endif
 
 #ifdef MECHCHECK_HAVE_MUJOCO
 TEST(mujoco, integrators_and_their_orders_on_the_free_top) {

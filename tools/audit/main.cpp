@@ -17,6 +17,15 @@
 #ifdef MECHCHECK_HAVE_MUJOCO
 #include "mechcheck/audit/mujoco.hpp"
 #endif
+#ifdef MECHCHECK_HAVE_SIMBODY
+#include "mechcheck/audit/simbody.hpp"
+#endif
+#ifdef MECHCHECK_HAVE_BULLET
+#include "mechcheck/audit/bullet.hpp"
+#endif
+#ifdef MECHCHECK_HAVE_ODE
+#include "mechcheck/audit/ode_engine.hpp"
+#endif
 #include "mechcheck/audit/report.hpp"
 #include "mechcheck/audit/tableau_file.hpp"
 
@@ -81,6 +90,12 @@ int main(int argc, char** argv) {
                  "physics-engine integrators to audit on the scenarios with exact references, "
                  "as shell patterns (e.g. 'mujoco::*'); with no --stepper, --tableau or --driver "
                  "only the engines are audited");
+  std::vector<std::string> engine_scenarios;
+  app.add_option("--scenario", engine_scenarios, "engine scenarios (default all)")
+      ->check(CLI::IsMember({"free_top", "free_top_near_axis", "pendulum_small", "pendulum_large", "projectile"}));
+  long long engine_long_run_steps = 100000;
+  app.add_option("--engine-long-run-steps", engine_long_run_steps, "steps of the engines' long run (0: none)")
+      ->check(CLI::Range(0LL, 100000000LL));
   CLI11_PARSE(app, argc, argv);
 
   const auto start = clock_type::now();
@@ -106,6 +121,15 @@ int main(int argc, char** argv) {
 #ifdef MECHCHECK_HAVE_MUJOCO
     for (auto& e : audit::mujoco::integrators()) engines.push_back(std::move(e));
 #endif
+#ifdef MECHCHECK_HAVE_SIMBODY
+    for (auto& e : audit::simbody::integrators()) engines.push_back(std::move(e));
+#endif
+#ifdef MECHCHECK_HAVE_BULLET
+    for (auto& e : audit::bullet::integrators()) engines.push_back(std::move(e));
+#endif
+#ifdef MECHCHECK_HAVE_ODE
+    for (auto& e : audit::ode_engine::integrators()) engines.push_back(std::move(e));
+#endif
     std::erase_if(engines, [&](const audit::engine_integrator& e) {
       return !audit_tool::matches(engine_patterns, e.name);
     });
@@ -120,6 +144,8 @@ int main(int argc, char** argv) {
         continue;
       }
       audit::engine_options eopt;
+      eopt.scenarios = engine_scenarios;
+      eopt.long_run_steps = engine_long_run_steps;
       if (!quiet) eopt.progress = [&](const std::string& what) { std::fprintf(stderr, "[%7.1f s] %s\n", elapsed(), what.c_str()); };
       engine_audits.push_back(audit::audit_engine(e, eopt));
     }
