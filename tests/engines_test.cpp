@@ -196,7 +196,13 @@ TEST(engines, every_adapter_starts_each_scenario_at_its_exact_state) {
   // bookkeeping: 1e-12 of the scale).
   for (const auto& e : every_engine())
     for (const auto& s : audit::scenarios()) {
-      const auto run = e.start(s);
+      std::unique_ptr<audit::engine_run> run;
+      try {
+        run = e.start(s);
+      } catch (const audit::scenario_refused& r) {
+        EXPECT_EQ(e.name, "simbody::CPodes") << r.what();
+        continue;
+      }
       const Eigen::VectorXd x = run->observe().observables, exact = s.exact(0);
       ASSERT_EQ(x.size(), exact.size()) << e.name << " " << s.name;
       EXPECT_LT((x - exact).norm(), 1e-12 * s.scale) << e.name << " " << s.name << ": " << x.transpose()
@@ -212,7 +218,13 @@ TEST(engines, every_adapter_advances_its_clock_by_h_a_step) {
   // An integrator that refuses the step size (Simbody's CPodes keeps its own error test)
   // must say so as a typed error naming the step.
   for (const auto& e : every_engine()) {
-    const auto run = e.start(s);
+    std::unique_ptr<audit::engine_run> run;
+    try {
+      run = e.start(s);
+    } catch (const audit::scenario_refused& r) {
+      EXPECT_EQ(e.name, "simbody::CPodes") << r.what();
+      continue;
+    }
     try {
       for (int i = 0; i < 16; ++i) run->step(s.t_end / 16);
     } catch (const convergence_error& ex) {

@@ -57,6 +57,8 @@ class run final : public engine_run {
     }
     try {
       model_ = std::make_unique<bridge::model>(b);
+    } catch (const bridge::refused& e) {
+      throw scenario_refused(name_ + ": " + e.what());
     } catch (const std::exception& e) {
       throw error(name_ + ": setting up " + s.name + ": Simbody: " + e.what());
     }

@@ -15,6 +15,11 @@
 /// and CPodes -- at a fixed step (Integrator::setFixedStepSize, stepTo), each declaring
 /// the order its header states in its own words (CPodes none), named simbody::<name>.
 /// Simbody's exceptions become typed errors naming the step.
+///
+/// SimTKmath 3.7 exports 101 SUNDIALS symbols (N_V*, Dense*, Band*, ...) of the CPODES it
+/// bundles. In a build that also links SUNDIALS 6.4 (the ARKODE/CVODE adapters), SUNDIALS'
+/// libraries come first on the link line and their definitions win, so simbody::CPodes is
+/// refused (scenario_refused) there; the other eight integrators do not use them.
 
 #include <string>
 #include <vector>

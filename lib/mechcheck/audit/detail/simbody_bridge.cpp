@@ -80,6 +80,12 @@ model::model(const setup& s) : p_(new impl) {
     m.free.setUToFitAngularVelocity(m.state, Vec3(s.omega0[0], s.omega0[1], s.omega0[2]));
     m.free.setUToFitLinearVelocity(m.state, Vec3(s.velocity0[0], s.velocity0[1], s.velocity0[2]));
   }
+#ifdef MECHCHECK_SIMBODY_WITH_SUNDIALS
+  if (std::string(entries().at(static_cast<std::size_t>(s.integrator)).name) == "CPodes")
+    throw refused(
+        "CPodes refused: SimTKmath 3.7 exports the SUNDIALS symbols of the CPODES it bundles "
+        "(N_V*, Dense*, ...) and this build also links SUNDIALS 6.4, whose definitions win");
+#endif
   m.integrator = entries().at(static_cast<std::size_t>(s.integrator)).make(m.system);
 }
 

@@ -4,9 +4,16 @@
 // compiled as C++17 and speaks only standard types. Not a public header.
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace mechcheck::audit::simbody_bridge {
+
+/// An integrator this build cannot run (see CPodes in the adapter's notes).
+class refused : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 struct setup {
   bool pin = false;  ///< a pin about world y (pendulum), else a free body
