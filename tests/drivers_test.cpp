@@ -10,6 +10,7 @@
 
 #include "mechcheck/audit/audit.hpp"
 #include "mechcheck/audit/drivers.hpp"
+#include "mechcheck/audit/found.hpp"
 #ifdef MECHCHECK_HAVE_GSL
 #include "mechcheck/audit/gsl.hpp"
 #endif
@@ -138,9 +139,7 @@ TEST(drivers, odeint_evaluations_match_its_steps) {
 
 #if defined(MECHCHECK_HAVE_GSL) && defined(MECHCHECK_HAVE_ARKODE)
 TEST(drivers, every_library_driver_runs_every_problem) {
-  std::vector<audit::adaptive_driver> all = audit::odeint_drivers();
-  for (auto& d : audit::gsl::drivers()) all.push_back(std::move(d));
-  for (auto& d : audit::arkode::drivers()) all.push_back(std::move(d));
+  const std::vector<audit::adaptive_driver> all = audit::drivers_found();
   EXPECT_EQ(all.size(), 13u);
   audit::driver_options opt;
   for (const auto& d : all) {

@@ -11,18 +11,7 @@
 #include <cmath>
 
 #include "mechcheck/audit/engines.hpp"
-#ifdef MECHCHECK_HAVE_MUJOCO
-#include "mechcheck/audit/mujoco.hpp"
-#endif
-#ifdef MECHCHECK_HAVE_SIMBODY
-#include "mechcheck/audit/simbody.hpp"
-#endif
-#ifdef MECHCHECK_HAVE_BULLET
-#include "mechcheck/audit/bullet.hpp"
-#endif
-#ifdef MECHCHECK_HAVE_ODE
-#include "mechcheck/audit/ode_engine.hpp"
-#endif
+#include "mechcheck/audit/found.hpp"
 
 namespace engines_test {
 using namespace mechcheck;
@@ -172,29 +161,11 @@ TEST(engines, explicit_euler_declared_second_order_is_contradicted_and_gains_ene
   EXPECT_GT(*a.scenarios[0].energy_growth, 0.75);  // explicit Euler: energy grows
 }
 
-/// Every engine integrator of the engines found.
-std::vector<audit::engine_integrator> every_engine() {
-  std::vector<audit::engine_integrator> all;
-#ifdef MECHCHECK_HAVE_MUJOCO
-  for (auto& e : audit::mujoco::integrators()) all.push_back(std::move(e));
-#endif
-#ifdef MECHCHECK_HAVE_SIMBODY
-  for (auto& e : audit::simbody::integrators()) all.push_back(std::move(e));
-#endif
-#ifdef MECHCHECK_HAVE_BULLET
-  for (auto& e : audit::bullet::integrators()) all.push_back(std::move(e));
-#endif
-#ifdef MECHCHECK_HAVE_ODE
-  for (auto& e : audit::ode_engine::integrators()) all.push_back(std::move(e));
-#endif
-  return all;
-}
-
 TEST(engines, every_adapter_starts_each_scenario_at_its_exact_state) {
   // The mapping of each scenario to the engine's frames, signs and units, checked where it
   // is exact: the observables at t = 0 (rounding of the engine's rotation and joint
   // bookkeeping: 1e-12 of the scale).
-  for (const auto& e : every_engine())
+  for (const auto& e : audit::engines_found())
     for (const auto& s : audit::scenarios()) {
       std::unique_ptr<audit::engine_run> run;
       try {
@@ -217,7 +188,7 @@ TEST(engines, every_adapter_advances_its_clock_by_h_a_step) {
   ASSERT_EQ(s.name, "projectile");
   // An integrator that refuses the step size (Simbody's CPodes keeps its own error test)
   // must say so as a typed error naming the step.
-  for (const auto& e : every_engine()) {
+  for (const auto& e : audit::engines_found()) {
     std::unique_ptr<audit::engine_run> run;
     try {
       run = e.start(s);
@@ -263,7 +234,7 @@ TEST(engines, without_the_gyroscopic_term_a_free_top_converges_to_the_wrong_moti
   audit::engine_options opt;
   opt.scenarios = {"free_top"};
   opt.long_run_steps = 0;
-  for (const auto& e : every_engine()) {
+  for (const auto& e : audit::engines_found()) {
     if (e.name != "bullet::gyroscopic_none" && e.name != "ode::step/no_gyroscopic") continue;
     const auto a = audit::audit_engine(e, opt);
     ASSERT_TRUE(a.scenarios[0].global.stalled) << e.name;

@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-#include "mechcheck/audit/drivers.hpp"
 #include "mechcheck/audit/result.hpp"
 #include "mechcheck/audit/tableau_file.hpp"
 
@@ -40,9 +39,6 @@ family_result gsl_double(const request& r);
 /// (family_arkode.cpp; where SUNDIALS is found); in mpfr50 the latter only.
 family_result arkode_double(const request& r);
 family_result arkode_mpfr50(const request& r);
-/// The adaptive drivers of the third-party libraries found (GSL's, SUNDIALS').
-std::vector<audit::adaptive_driver> gsl_drivers();
-std::vector<audit::adaptive_driver> sundials_drivers();
 /// The --tableau files' steppers (family_tableau.cpp).
 family_result tableau_double(const request& r);
 family_result tableau_mpfr50(const request& r);

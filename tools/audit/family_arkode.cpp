@@ -38,5 +38,4 @@ family_result arkode_double(const request& r) {
 }
 
 family_result arkode_mpfr50(const request& r) { return run_family(tableau_steppers<mpfr50>(), r); }
-std::vector<audit::adaptive_driver> sundials_drivers() { return audit::arkode::drivers(); }
 }  // namespace mechcheck::audit_tool

@@ -12,5 +12,4 @@ family_result gsl_double(const request& r) {
     steppers.push_back(audit::black_box_stepper(box));
   return run_family(steppers, r);
 }
-std::vector<audit::adaptive_driver> gsl_drivers() { return audit::gsl::drivers(); }
 }  // namespace mechcheck::audit_tool

@@ -12,20 +12,7 @@
 
 #include "families.hpp"
 #include "run_family.hpp"
-#include "mechcheck/audit/drivers.hpp"
-#include "mechcheck/audit/engines.hpp"
-#ifdef MECHCHECK_HAVE_MUJOCO
-#include "mechcheck/audit/mujoco.hpp"
-#endif
-#ifdef MECHCHECK_HAVE_SIMBODY
-#include "mechcheck/audit/simbody.hpp"
-#endif
-#ifdef MECHCHECK_HAVE_BULLET
-#include "mechcheck/audit/bullet.hpp"
-#endif
-#ifdef MECHCHECK_HAVE_ODE
-#include "mechcheck/audit/ode_engine.hpp"
-#endif
+#include "mechcheck/audit/found.hpp"
 #include "mechcheck/audit/report.hpp"
 #include "mechcheck/audit/tableau_file.hpp"
 
@@ -102,6 +89,22 @@ int main(int argc, char** argv) {
   const auto elapsed = [&] {
     return std::chrono::duration<double>(clock_type::now() - start).count();
   };
+  const auto progress = [&](const std::string& what) {
+    std::fprintf(stderr, "[%7.1f s] %s\n", elapsed(), what.c_str());
+  };
+  // Writes a report by `write` and names its files; false (with the reason) on failure.
+  const auto report_files = [&](const auto& write) {
+    try {
+      const std::vector<std::string> written = write();
+      std::cout << "\nwrote";
+      for (const auto& w : written) std::cout << " " << w;
+      std::cout << "\n";
+      return true;
+    } catch (const std::exception& e) {
+      std::cerr << "mechcheck-audit: " << e.what() << "\n";
+      return false;
+    }
+  };
   audit_tool::request request;
   request.patterns = steppers;
   std::vector<audit::tableau_analysis> analyses;
@@ -117,19 +120,7 @@ int main(int argc, char** argv) {
   }
   if (!tableau_files.empty()) request.patterns.push_back("tableau::*");  // alone: only them
   if (!engine_patterns.empty()) {
-    std::vector<audit::engine_integrator> engines;
-#ifdef MECHCHECK_HAVE_MUJOCO
-    for (auto& e : audit::mujoco::integrators()) engines.push_back(std::move(e));
-#endif
-#ifdef MECHCHECK_HAVE_SIMBODY
-    for (auto& e : audit::simbody::integrators()) engines.push_back(std::move(e));
-#endif
-#ifdef MECHCHECK_HAVE_BULLET
-    for (auto& e : audit::bullet::integrators()) engines.push_back(std::move(e));
-#endif
-#ifdef MECHCHECK_HAVE_ODE
-    for (auto& e : audit::ode_engine::integrators()) engines.push_back(std::move(e));
-#endif
+    std::vector<audit::engine_integrator> engines = audit::engines_found();
     std::erase_if(engines, [&](const audit::engine_integrator& e) {
       return !audit_tool::matches(engine_patterns, e.name);
     });
@@ -146,20 +137,12 @@ int main(int argc, char** argv) {
       audit::engine_options eopt;
       eopt.scenarios = engine_scenarios;
       eopt.long_run_steps = engine_long_run_steps;
-      if (!quiet) eopt.progress = [&](const std::string& what) { std::fprintf(stderr, "[%7.1f s] %s\n", elapsed(), what.c_str()); };
+      if (!quiet) eopt.progress = progress;
       engine_audits.push_back(audit::audit_engine(e, eopt));
     }
     if (!list) {
       audit::print_engines(std::cout, engine_audits);
-      try {
-        const auto written = audit::write_engine_report(output, engine_audits);
-        std::cout << "\nwrote";
-        for (const auto& w : written) std::cout << " " << w;
-        std::cout << "\n";
-      } catch (const std::exception& ex) {
-        std::cerr << "mechcheck-audit: " << ex.what() << "\n";
-        return 1;
-      }
+      if (!report_files([&] { return audit::write_engine_report(output, engine_audits); })) return 1;
       std::cout << "audited " << engine_audits.size() << " engine integrators in "
                 << static_cast<long>(elapsed() + 0.5) << " s\n";
     }
@@ -170,13 +153,7 @@ int main(int argc, char** argv) {
   // The adaptive drivers (double).
   std::vector<audit::adaptive_driver> drivers;
   if (!driver_patterns.empty()) {
-    for (auto& d : audit::odeint_drivers()) drivers.push_back(std::move(d));
-#ifdef MECHCHECK_HAVE_GSL
-    for (auto& d : audit_tool::gsl_drivers()) drivers.push_back(std::move(d));
-#endif
-#ifdef MECHCHECK_HAVE_ARKODE
-    for (auto& d : audit_tool::sundials_drivers()) drivers.push_back(std::move(d));
-#endif
+    drivers = audit::drivers_found();
     std::erase_if(drivers, [&](const audit::adaptive_driver& d) {
       return !audit_tool::matches(driver_patterns, d.name);
     });
@@ -193,25 +170,16 @@ int main(int argc, char** argv) {
     audit::driver_options dopt;
     dopt.problems = problems;
     dopt.timing = timing;
-    if (!quiet)
-      dopt.progress = [&](const std::string& what) { std::fprintf(stderr, "[%7.1f s] %s\n", elapsed(), what.c_str()); };
+    if (!quiet) dopt.progress = progress;
     for (const auto& d : drivers) driver_audits.push_back(audit::audit_driver(d, dopt));
     audit::print_drivers(std::cout, driver_audits);
     if (!quiet) std::fprintf(stderr, "[%7.1f s] drivers done in %.1f s\n", elapsed(), elapsed() - t0);
   }
   if (drivers_only) {
     if (list) return 0;
-    try {
-      const auto written = audit::write_driver_report(output, driver_audits,
-                                                      long_run_problems.empty() ? "kepler_e0.5" : long_run_problems.front(),
-                                                      timing);
-      std::cout << "\nwrote";
-      for (const auto& w : written) std::cout << " " << w;
-      std::cout << "\n";
-    } catch (const std::exception& e) {
-      std::cerr << "mechcheck-audit: " << e.what() << "\n";
+    const std::string plot_problem = long_run_problems.empty() ? "kepler_e0.5" : long_run_problems.front();
+    if (!report_files([&] { return audit::write_driver_report(output, driver_audits, plot_problem, timing); }))
       return 1;
-    }
     std::cout << "audited " << driver_audits.size() << " drivers in " << static_cast<long>(elapsed() + 0.5) << " s\n";
     return 0;
   }
@@ -221,10 +189,7 @@ int main(int argc, char** argv) {
   request.options.long_run_problems = long_run_problems;
   request.options.long_run_steps = long_run_steps;
   request.options.timing = true;
-  if (!quiet)
-    request.options.progress = [&](const std::string& what) {
-      std::fprintf(stderr, "[%7.1f s] %s\n", elapsed(), what.c_str());
-    };
+  if (!quiet) request.options.progress = progress;
 
   std::vector<audit::stepper_audit> audits;
   std::vector<std::string> names;
@@ -270,21 +235,16 @@ int main(int argc, char** argv) {
   report.timing = timing;
   if (!long_run_problems.empty()) report.long_run_problem = long_run_problems.front();
   audit::print_table(std::cout, audits, report);
-  try {
+  const bool wrote = report_files([&] {
     auto written = audit::write_report(output, audits, report);
     if (!driver_audits.empty())
       for (const auto& w : audit::write_driver_report(output, driver_audits, report.long_run_problem, timing))
         written.push_back(w);
-    if (!analyses.empty()) {
+    if (!analyses.empty())
       for (const auto& w : audit::write_tableau_report(output, analyses)) written.push_back(w);
-    }
-    std::cout << "\nwrote";
-    for (const auto& w : written) std::cout << " " << w;
-    std::cout << "\n";
-  } catch (const std::exception& e) {
-    std::cerr << "mechcheck-audit: " << e.what() << "\n";
-    return 1;
-  }
+    return written;
+  });
+  if (!wrote) return 1;
   std::cout << "audited " << audits.size() << " stepper-tier pairs in "
             << static_cast<long>(elapsed() + 0.5) << " s\n";
   int status = 0;

@@ -1,0 +1,64 @@
+#pragma once
+/// The adaptive drivers and engine integrators of the third-party adapters a binary is
+/// built with: each adapter's list where its macro is defined (MECHCHECK_HAVE_GSL,
+/// MECHCHECK_HAVE_ARKODE, MECHCHECK_HAVE_MUJOCO, MECHCHECK_HAVE_SIMBODY,
+/// MECHCHECK_HAVE_BULLET, MECHCHECK_HAVE_ODE -- the build defines them for the targets
+/// that link mechcheck::audit_gsl, _arkode, _mujoco, _simbody, _bullet, _ode). Boost.Odeint's
+/// drivers are always there.
+
+#include <vector>
+
+#include "mechcheck/audit/drivers.hpp"
+#include "mechcheck/audit/engines.hpp"
+#ifdef MECHCHECK_HAVE_GSL
+#include "mechcheck/audit/gsl.hpp"
+#endif
+#ifdef MECHCHECK_HAVE_ARKODE
+#include "mechcheck/audit/arkode.hpp"
+#endif
+#ifdef MECHCHECK_HAVE_MUJOCO
+#include "mechcheck/audit/mujoco.hpp"
+#endif
+#ifdef MECHCHECK_HAVE_SIMBODY
+#include "mechcheck/audit/simbody.hpp"
+#endif
+#ifdef MECHCHECK_HAVE_BULLET
+#include "mechcheck/audit/bullet.hpp"
+#endif
+#ifdef MECHCHECK_HAVE_ODE
+#include "mechcheck/audit/ode_engine.hpp"
+#endif
+
+namespace mechcheck::audit {
+
+/// Odeint's controlled steppers, then GSL's and SUNDIALS' drivers where built.
+inline std::vector<adaptive_driver> drivers_found() {
+  std::vector<adaptive_driver> all = odeint_drivers();
+#ifdef MECHCHECK_HAVE_GSL
+  for (auto& d : gsl::drivers()) all.push_back(std::move(d));
+#endif
+#ifdef MECHCHECK_HAVE_ARKODE
+  for (auto& d : arkode::drivers()) all.push_back(std::move(d));
+#endif
+  return all;
+}
+
+/// MuJoCo's, Simbody's, Bullet's and ODE's integrators, each where built.
+inline std::vector<engine_integrator> engines_found() {
+  std::vector<engine_integrator> all;
+#ifdef MECHCHECK_HAVE_MUJOCO
+  for (auto& e : mujoco::integrators()) all.push_back(std::move(e));
+#endif
+#ifdef MECHCHECK_HAVE_SIMBODY
+  for (auto& e : simbody::integrators()) all.push_back(std::move(e));
+#endif
+#ifdef MECHCHECK_HAVE_BULLET
+  for (auto& e : bullet::integrators()) all.push_back(std::move(e));
+#endif
+#ifdef MECHCHECK_HAVE_ODE
+  for (auto& e : ode_engine::integrators()) all.push_back(std::move(e));
+#endif
+  return all;
+}
+
+}  // namespace mechcheck::audit
