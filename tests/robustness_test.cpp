@@ -559,6 +559,12 @@ void references(tally& t) {
           [](const args& a) { ref::solid_cylinder_inertia(a[0], a[1], a[2]); });
   t.sweep("thin_rod_inertia", {{"mass", pos}, {"length", pos}}, {1, 2},
           [](const args& a) { ref::thin_rod_inertia(a[0], a[1]); });
+  t.sweep("solid_capsule_inertia", {{"mass", pos}, {"radius", pos}, {"cylinder length", pos}}, {1, 2, 3},
+          [](const args& a) { ref::solid_capsule_inertia(a[0], a[1], a[2]); });
+  t.sweep("solid_cone_inertia", {{"mass", pos}, {"radius", pos}, {"height", pos}}, {1, 2, 3},
+          [](const args& a) { ref::solid_cone_inertia(a[0], a[1], a[2]); });
+  t.sweep("solid_ellipsoid_inertia", {{"mass", pos}, {"semi-axis a", pos}, {"semi-axis b", pos}, {"semi-axis c", pos}},
+          {1, 2, 3, 4}, [](const args& a) { ref::solid_ellipsoid_inertia(a[0], a[1], a[2], a[3]); });
   const auto vertices = [](double x) {
     return std::array<V3, 4>{V3(x, 0, 0), V3(1, 0, 0), V3(0, 1, 0), V3(0, 0, 1)};
   };

@@ -56,6 +56,48 @@ matrix3<T> solid_cylinder_inertia(const T& mass, const T& r, const T& h) {
   return vector3<T>(side, side, mass * r * r / 2).asDiagonal();
 }
 
+/// Solid capsule: a cylinder of radius R and length h along z capped by two solid
+/// hemispheres, uniform density. With the cylinder's mass m_c = M h / (h + 4R/3) and each
+/// cap's m_h = (M - m_c) / 2 (volumes pi R^2 h and (2/3) pi R^3):
+///   I_zz = m_c R^2 / 2 + 2 (2/5) m_h R^2,
+///   I_xx = I_yy = m_c (3R^2 + h^2) / 12 + 2 m_h (2R^2/5 + h^2/4 + 3hR/8),
+/// each cap's transverse moment being (2/5) m_h R^2 about its flat face's centre (half a
+/// sphere's) moved by the parallel-axis theorem (eq 160) from its centre of mass 3R/8 off
+/// the face to the capsule's centre h/2 + 3R/8 away: + m_h ((h/2 + 3R/8)^2 - (3R/8)^2).
+template <class T>
+matrix3<T> solid_capsule_inertia(const T& mass, const T& r, const T& h) {
+  require_positive(mass, "solid_capsule_inertia", "mass");
+  require_positive(r, "solid_capsule_inertia", "radius");
+  require_positive(h, "solid_capsule_inertia", "cylinder length");
+  const T m_c = mass * h / (h + 4 * r / 3), m_h = (mass - m_c) / 2;
+  const T axial = m_c * r * r / 2 + 4 * m_h * r * r / 5;
+  const T side = m_c * (3 * r * r + h * h) / 12 + 2 * m_h * (2 * r * r / 5 + h * h / 4 + 3 * h * r / 8);
+  return vector3<T>(side, side, axial).asDiagonal();
+}
+
+/// Solid right circular cone of base radius R and height h, axis z, about its centre of
+/// mass (h/4 above the base): diag(3M R^2/20 + 3M h^2/80, the same, 3M R^2/10).
+template <class T>
+matrix3<T> solid_cone_inertia(const T& mass, const T& r, const T& h) {
+  require_positive(mass, "solid_cone_inertia", "mass");
+  require_positive(r, "solid_cone_inertia", "radius");
+  require_positive(h, "solid_cone_inertia", "height");
+  const T side = 3 * mass * r * r / 20 + 3 * mass * h * h / 80;
+  return vector3<T>(side, side, 3 * mass * r * r / 10).asDiagonal();
+}
+
+/// Solid ellipsoid of semi-axes a, b, c along x, y, z: (M/5) diag(b^2 + c^2, a^2 + c^2,
+/// a^2 + b^2).
+template <class T>
+matrix3<T> solid_ellipsoid_inertia(const T& mass, const T& a, const T& b, const T& c) {
+  require_positive(mass, "solid_ellipsoid_inertia", "mass");
+  require_positive(a, "solid_ellipsoid_inertia", "semi-axis a");
+  require_positive(b, "solid_ellipsoid_inertia", "semi-axis b");
+  require_positive(c, "solid_ellipsoid_inertia", "semi-axis c");
+  const vector3<T> d(b * b + c * c, a * a + c * c, a * a + b * b);
+  return (mass / 5 * d).asDiagonal();
+}
+
 /// Thin rod of length L along z: diag(M L^2 / 12, M L^2 / 12, 0).
 template <class T>
 matrix3<T> thin_rod_inertia(const T& mass, const T& length) {
