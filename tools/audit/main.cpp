@@ -137,12 +137,19 @@ int main(int argc, char** argv) {
       audit::engine_options eopt;
       eopt.scenarios = engine_scenarios;
       eopt.long_run_steps = engine_long_run_steps;
+      eopt.timing = timing;
       if (!quiet) eopt.progress = progress;
       engine_audits.push_back(audit::audit_engine(e, eopt));
     }
     if (!list) {
-      audit::print_engines(std::cout, engine_audits);
-      if (!report_files([&] { return audit::write_engine_report(output, engine_audits); })) return 1;
+      // The inertia of the shapes of every engine one of whose integrators was asked for.
+      std::vector<audit::shape_audit> shape_audits;
+      for (const auto& engine : audit::shapes_found())
+        if (std::any_of(engines.begin(), engines.end(),
+                        [&](const audit::engine_integrator& e) { return e.name.rfind(engine.engine + "::", 0) == 0; }))
+          for (auto& a : audit::audit_shapes(engine)) shape_audits.push_back(std::move(a));
+      audit::print_engines(std::cout, engine_audits, shape_audits);
+      if (!report_files([&] { return audit::write_engine_report(output, engine_audits, shape_audits); })) return 1;
       std::cout << "audited " << engine_audits.size() << " engine integrators in "
                 << static_cast<long>(elapsed() + 0.5) << " s\n";
     }

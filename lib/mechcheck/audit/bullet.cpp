@@ -25,6 +25,7 @@ const gyroscopic_mode modes[] = {
 };
 
 Eigen::Vector3d vec(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+btVector3 bt(const Eigen::Vector3d& v) { return {v(0), v(1), v(2)}; }
 Eigen::Matrix3d mat(const btMatrix3x3& m) {
   Eigen::Matrix3d r;
   for (int i = 0; i < 3; ++i)
@@ -43,25 +44,14 @@ class run final : public engine_run {
     world_ = std::make_unique<btDiscreteDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                                         config_.get());
     world_->setGravity(btVector3(0, 0, -s.gravity));
-    shape_ = std::make_unique<btSphereShape>(0.1);
-    btVector3 inertia(1, 1, 1);
+    shape_ = std::make_unique<btSphereShape>(0.1);  // collision only; the inertia is given
+    // A btRigidBody's frame is its centre of mass.
     btTransform start;
-    start.setIdentity();
-    switch (s.kind) {
-      case scenario_kind::free_top:
-      case scenario_kind::free_top_near_axis:
-        inertia = btVector3(s.inertia(0), s.inertia(1), s.inertia(2));
-        break;
-      case scenario_kind::pendulum_small:
-      case scenario_kind::pendulum_large:
-        inertia = btVector3(1e-3, 1e-3, 1e-3);
-        start.setOrigin(btVector3(-s.length * std::sin(s.theta0), 0, -s.length * std::cos(s.theta0)));
-        start.setBasis(btMatrix3x3(btQuaternion(btVector3(0, 1, 0), s.theta0)));
-        break;
-      case scenario_kind::projectile:
-        break;
-    }
-    btRigidBody::btRigidBodyConstructionInfo info(s.mass, nullptr, shape_.get(), inertia);
+    start.setOrigin(bt(s.position0));
+    start.setBasis(btMatrix3x3(s.rotation0(0, 0), s.rotation0(0, 1), s.rotation0(0, 2), s.rotation0(1, 0),
+                               s.rotation0(1, 1), s.rotation0(1, 2), s.rotation0(2, 0), s.rotation0(2, 1),
+                               s.rotation0(2, 2)));
+    btRigidBody::btRigidBodyConstructionInfo info(s.mass, nullptr, shape_.get(), bt(s.inertia));
     info.m_startWorldTransform = start;
     info.m_linearDamping = 0;
     info.m_angularDamping = 0;
@@ -69,25 +59,25 @@ class run final : public engine_run {
     body_->setActivationState(DISABLE_DEACTIVATION);
     body_->setFlags(g.flags);
     world_->addRigidBody(body_.get());
-    switch (s.kind) {
-      case scenario_kind::free_top:
-      case scenario_kind::free_top_near_axis:
-        body_->setAngularVelocity(btVector3(s.omega0(0), s.omega0(1), s.omega0(2)));  // R = 1
+    body_->setLinearVelocity(bt(s.velocity0));
+    body_->setAngularVelocity(bt(s.omega0));  // world frame
+    // The pivot in the body's frame: -com (the body frame is the centre of mass).
+    const btVector3 pivot = bt(Eigen::Vector3d(-s.com));
+    switch (s.joint) {
+      case joint_kind::free:
         break;
-      case scenario_kind::pendulum_small:
-      case scenario_kind::pendulum_large: {
-        // Pivot at the origin: in the bob's frame at l along its own +z.
-        hinge_ = std::make_unique<btHingeConstraint>(*body_, btVector3(0, 0, s.length), btVector3(0, 1, 0));
-        world_->addConstraint(hinge_.get());
+      case joint_kind::hinge_y:
+        joint_ = std::make_unique<btHingeConstraint>(*body_, pivot,
+                                                     bt(Eigen::Vector3d(s.rotation0.transpose().col(1))));
         break;
-      }
-      case scenario_kind::projectile:
-        body_->setLinearVelocity(btVector3(s.velocity0(0), s.velocity0(1), s.velocity0(2)));
+      case joint_kind::ball:
+        joint_ = std::make_unique<btPoint2PointConstraint>(*body_, pivot);
         break;
     }
+    if (joint_) world_->addConstraint(joint_.get());
   }
   ~run() override {
-    if (hinge_) world_->removeConstraint(hinge_.get());
+    if (joint_) world_->removeConstraint(joint_.get());
     if (body_) world_->removeRigidBody(body_.get());
   }
   run(const run&) = delete;
@@ -96,39 +86,23 @@ class run final : public engine_run {
   void step(double h) override {
     if (!(h > 0 && std::isfinite(h))) throw domain_error(name_ + ": the step must be positive, got " + to_text(h));
     ++steps_;
+    if (s_.central != 0) {  // cleared by each stepSimulation
+      const Eigen::Vector3d x = vec(body_->getCenterOfMassPosition());
+      body_->applyCentralForce(bt(Eigen::Vector3d(-s_.mass * s_.central / (x.norm() * x.squaredNorm()) * x)));
+    }
     world_->stepSimulation(h, 0);
     const Eigen::Vector3d x = vec(body_->getCenterOfMassPosition()), w = vec(body_->getAngularVelocity());
     if (!x.allFinite() || !w.allFinite())
       throw non_finite_error(name_ + ": step " + std::to_string(steps_) + ": the body's state is not finite");
   }
 
-  engine_observation observe() const override {
-    engine_observation o;
-    const Eigen::Matrix3d r = mat(body_->getWorldTransform().getBasis());
-    const Eigen::Vector3d w_world = vec(body_->getAngularVelocity());
-    const Eigen::Vector3d x = vec(body_->getCenterOfMassPosition()), v = vec(body_->getLinearVelocity());
-    switch (s_.kind) {
-      case scenario_kind::free_top:
-      case scenario_kind::free_top_near_axis: {
-        const Eigen::Vector3d w = r.transpose() * w_world, m = s_.inertia.cwiseProduct(w);
-        o.observables = w;
-        o.energy = w.dot(m) / 2;
-        o.momentum = r * m;
-        break;
-      }
-      case scenario_kind::pendulum_small:
-      case scenario_kind::pendulum_large:
-        o.observables.resize(2);
-        o.observables << std::atan2(-x(0), -x(2)), w_world(1);
-        o.energy = s_.mass * v.squaredNorm() / 2 + 1e-3 * w_world.squaredNorm() / 2 + s_.mass * s_.gravity * x(2);
-        break;
-      case scenario_kind::projectile:
-        o.observables.resize(6);
-        o.observables << x, v;
-        o.energy = s_.mass * v.squaredNorm() / 2 + s_.mass * s_.gravity * x(2);
-        break;
-    }
-    return o;
+  body_reading read() const override {
+    body_reading r;
+    r.rotation = mat(body_->getWorldTransform().getBasis());
+    r.position = vec(body_->getCenterOfMassPosition());
+    r.velocity = vec(body_->getLinearVelocity());
+    r.omega = vec(body_->getAngularVelocity());
+    return r;
   }
 
  private:
@@ -141,7 +115,7 @@ class run final : public engine_run {
   std::unique_ptr<btDiscreteDynamicsWorld> world_;
   std::unique_ptr<btCollisionShape> shape_;
   std::unique_ptr<btRigidBody> body_;
-  std::unique_ptr<btHingeConstraint> hinge_;
+  std::unique_ptr<btTypedConstraint> joint_;
   long long steps_ = 0;
 };
 }  // namespace
@@ -149,6 +123,43 @@ class run final : public engine_run {
 std::string version() {
   const int v = btGetVersion();
   return std::to_string(v / 100) + "." + std::to_string(v % 100);
+}
+
+engine_shapes shapes() {
+  engine_shapes e;
+  e.engine = "bullet";
+  e.origin = "Bullet " + version() + ": btCollisionShape::calculateLocalInertia of btBoxShape, btSphereShape, "
+             "btCylinderShapeZ, btCapsuleShapeZ, btConeShapeZ and a btCompoundShape of two spheres";
+  e.moments = [](const shape& s) -> Eigen::Vector3d {
+    const double* z = s.size.data();
+    std::unique_ptr<btCollisionShape> shape;
+    btSphereShape ball(z[0]);
+    if (s.name == "box")
+      shape = std::make_unique<btBoxShape>(btVector3(z[0] / 2, z[1] / 2, z[2] / 2));
+    else if (s.name == "sphere")
+      shape = std::make_unique<btSphereShape>(z[0]);
+    else if (s.name == "cylinder")
+      shape = std::make_unique<btCylinderShapeZ>(btVector3(z[0], z[0], z[1] / 2));
+    else if (s.name == "capsule")
+      shape = std::make_unique<btCapsuleShapeZ>(z[0], z[1]);
+    else if (s.name == "cone")
+      shape = std::make_unique<btConeShapeZ>(z[0], z[1]);
+    else if (s.name == "two_spheres") {
+      auto compound = std::make_unique<btCompoundShape>();
+      btTransform at;
+      at.setIdentity();
+      at.setOrigin(btVector3(z[1], 0, 0));
+      compound->addChildShape(at, &ball);
+      at.setOrigin(btVector3(-z[1], 0, 0));
+      compound->addChildShape(at, &ball);
+      shape = std::move(compound);
+    } else
+      throw scenario_refused("bullet: Bullet 3.24 has no " + s.name + " shape (btMultiSphereShape approximates one)");
+    btVector3 inertia(0, 0, 0);
+    shape->calculateLocalInertia(s.mass, inertia);
+    return vec(inertia);
+  };
+  return e;
 }
 
 std::vector<engine_integrator> integrators() {

@@ -3,18 +3,16 @@
 /// BT_USE_DOUBLE_PRECISION) under the engine audit (engines.hpp). Built into
 /// mechcheck::audit_bullet only where `pkg-config bullet-float64` finds it.
 ///
-/// Units SI; z up (btDiscreteDynamicsWorld::setGravity(0, 0, -g)). A btRigidBody with a
-/// btSphereShape of radius 0.1 for collision (no other body: no contact), its local inertia
-/// set to the scenario's principal moments, deactivation disabled, no damping; state read
-/// from getWorldTransform (centre of mass, basis R) and getAngularVelocity (world frame):
-/// the body angular velocity is R^T omega_world. One stepSimulation(h, 0) is one step of
-/// size h (maxSubSteps = 0: no fixed internal step, no interpolation).
-///   - free tops: gravity 0;
-///   - pendulums: a btHingeConstraint to the world, pivot at the origin, axis y; the bob
-///     placed at l (-sin theta0, 0, -cos theta0) turned by theta0 about y; the observables
-///     theta from the bob's position (atan2(-x, -z)) and thetadot the y component of its
-///     world angular velocity;
-///   - projectile: linear velocity v0.
+/// Units SI; z up (btDiscreteDynamicsWorld::setGravity(0, 0, -g)). A btRigidBody (whose
+/// frame is its centre of mass) with a btSphereShape of radius 0.1 for collision (no other
+/// body: no contact), its local inertia the scenario's principal moments, deactivation
+/// disabled, no damping, started at the scenario's state (world-frame velocities); state
+/// read from getWorldTransform, getCenterOfMassPosition, getLinearVelocity and
+/// getAngularVelocity (world frame). One stepSimulation(h, 0) is one step of size h
+/// (maxSubSteps = 0: no fixed internal step, no interpolation). Joints: hinge_y a
+/// btHingeConstraint to the world with its pivot at -com in the body frame and its axis
+/// R0^T y; ball a btPoint2PointConstraint at -com. The central force of the Kepler
+/// scenario is applyCentralForce at the step's start (Bullet clears forces each step).
 /// Integrators: the gyroscopic-force modes of btRigidBody -- none, EXPLICIT,
 /// IMPLICIT_WORLD, IMPLICIT_BODY (btRigidBody.h: IMPLICIT_BODY "enabled by default in
 /// Bullet 2.83 and onwards") -- named bullet::gyroscopic_<mode>. Bullet states no order.
@@ -30,5 +28,8 @@ namespace mechcheck::audit::bullet {
 std::string version();
 
 std::vector<engine_integrator> integrators();
+
+/// How bullet computes the inertia of its shapes (engines.hpp, shapes()).
+engine_shapes shapes();
 
 }  // namespace mechcheck::audit::bullet

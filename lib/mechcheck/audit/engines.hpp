@@ -40,27 +40,51 @@ class scenario_refused : public error {
 enum class scenario_kind {
   free_top,            ///< asymmetric free body, no gravity: body angular velocity
   free_top_near_axis,  ///< the same near the intermediate axis (flips)
+  free_symmetric_top,  ///< symmetric free body: body angular velocity and symmetry axis
+  heavy_top,           ///< symmetric top on a fixed point in steady precession
+  heavy_top_nutation,  ///< the same top nutating from a turning point
   pendulum_small,      ///< hinge pendulum, amplitude 0.1 rad: angle and rate
   pendulum_large,      ///< hinge pendulum, amplitude 2.5 rad
   projectile,          ///< free body in uniform gravity: position and velocity
+  kepler,              ///< point mass under a central inverse-square force
 };
 
-/// A scenario: its parameters and exact reference.
+/// How the scenario's body is held.
+enum class joint_kind {
+  free,     ///< six degrees of freedom; the body frame's origin is the centre of mass
+  hinge_y,  ///< a hinge about world y through the world origin (the pivot)
+  ball,     ///< a ball joint at the world origin (the pivot)
+};
+
+/// A scenario: one rigid body in engine-neutral terms every adapter maps to its engine,
+/// and the exact reference of its observables.
+///
+/// The body: mass m, principal moments `inertia` about its centre of mass along the body
+/// axes. For a jointed body the body frame's origin is the pivot (the world origin) and the
+/// centre of mass is at `com` in the body frame; for a free body com = 0. World z is up;
+/// gravity is |g| along -z; `central` k adds the force -m k x / |x|^3 on the centre of
+/// mass at x (the Kepler problem's attraction to the origin, evaluated where the engine
+/// evaluates forces).
+/// The state at t = 0: orientation rotation0 (body to world), centre of mass position0 and
+/// velocity0, angular velocity omega0 in the world frame (consistent with the joint).
 struct scenario {
   scenario_kind kind;
   std::string name, description;
-  Eigen::Vector3d inertia{1, 2, 3};  ///< principal moments (free tops; body frame)
-  Eigen::Vector3d omega0{0, 0, 0};   ///< body angular velocity at t = 0 (free tops)
+  joint_kind joint = joint_kind::free;
   double mass = 1;
-  double length = 1;             ///< pivot to centre of mass (pendulums)
-  double gravity = 9.81;         ///< |g| (pendulums, projectile), along -z
-  double theta0 = 0;             ///< pendulum angle at t = 0 (rate 0)
-  Eigen::Vector3d velocity0{0, 0, 0};  ///< projectile's velocity at t = 0
+  Eigen::Vector3d inertia{1, 1, 1};
+  Eigen::Vector3d com{0, 0, 0};
+  double gravity = 0;
+  double central = 0;
+  Eigen::Matrix3d rotation0 = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d position0{0, 0, 0}, velocity0{0, 0, 0}, omega0{0, 0, 0};
   double t_end = 1;              ///< time of the order study
   long steps0 = 16;              ///< its coarsest run
   double h_long = 0.01;          ///< step of the long run
-  bool conserves_momentum = false;  ///< angular momentum in the world frame (free tops)
   bool conserves_energy = true;
+  /// Angular momentum about the world origin conserved: every component, or only its
+  /// vertical one (a top on a fixed point under gravity).
+  enum class momentum_law { none, vector, vertical } momentum = momentum_law::none;
   /// The observables at time t (exact) and their scale.
   std::function<Eigen::VectorXd(double)> exact;
   double scale = 1;
@@ -69,12 +93,29 @@ struct scenario {
 /// The scenarios every engine is asked for.
 std::vector<scenario> scenarios();
 
-/// What an engine's run returns after each step.
+/// A hinge scenario (pendulum) started at angle theta and rate thetadot instead of its own
+/// initial state: the map of one step in (theta, thetadot) for the Jacobian study.
+scenario with_hinge_state(scenario s, double theta, double thetadot);
+
+/// Moment of inertia of a hinge scenario's body about its hinge: m |com|^2 + I_yy.
+double hinge_inertia(const scenario& s);
+
+/// The body's state as an engine reports it: orientation (body to world), centre of mass
+/// position and velocity, angular velocity in the world frame.
+struct body_reading {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d position{0, 0, 0}, velocity{0, 0, 0}, omega{0, 0, 0};
+};
+
+/// What the audit compares after each step.
 struct engine_observation {
   Eigen::VectorXd observables;   ///< as the scenario's exact()
   double energy = 0;             ///< total energy (kinetic + potential)
-  Eigen::Vector3d momentum{0, 0, 0};  ///< angular momentum in the world frame
+  Eigen::Vector3d momentum{0, 0, 0};  ///< angular momentum about the origin (world frame)
 };
+
+/// The scenario's observables, energy and angular momentum of a body state.
+engine_observation observe(const scenario& s, const body_reading& r);
 
 /// One run of a scenario by an engine integrator.
 class engine_run {
@@ -82,7 +123,7 @@ class engine_run {
   virtual ~engine_run() = default;
   /// One step of size h; throws error (naming the engine's message) on failure.
   virtual void step(double h) = 0;
-  virtual engine_observation observe() const = 0;
+  virtual body_reading read() const = 0;
 };
 
 /// An engine integrator: how to start a run of a scenario (throws scenario_refused).
@@ -90,6 +131,7 @@ struct engine_integrator {
   std::string name;    ///< e.g. "mujoco::RK4"
   std::string origin;  ///< the engine, its version and its documentation's words
   std::optional<int> declared_order;
+  std::optional<bool> declared_symplectic;  ///< where the documentation says so (origin quotes it)
   std::function<std::unique_ptr<engine_run>(const scenario&)> start;
 };
 
@@ -102,28 +144,81 @@ struct engine_scenario_audit {
   double energy_max = 0, momentum_max = 0;               ///< largest relative errors
   std::string long_run_failure;
   long long long_run_steps = 0;
+  /// RMS relative errors of the long run per window of steps [2^w, 2^(w+1)): (time, rms).
+  std::vector<std::pair<double, double>> energy_history, momentum_history;
+  /// Wall time of one step(): the median of the long run's three thirds (reading the state
+  /// and the energy are not timed); 0 when not timed (engine_options::timing) or the long
+  /// run failed.
+  double seconds_per_step = 0;
+  /// One-degree-of-freedom scenarios: det of one step's Jacobian in (theta, p), p = I
+  /// thetadot, at the scenario's initial state with h = h_long, by finite differences
+  /// (finite_differences.hpp) -- 1 for a symplectic map -- and its resolution.
+  std::optional<double> det_minus_one;
+  double det_resolution = 0;
 };
 
 struct engine_audit {
   std::string integrator, origin;
   std::vector<engine_scenario_audit> scenarios;
   verdict order;
+  verdict symplectic;  ///< |det - 1| against its resolution on the hinge scenarios
 };
 
 struct engine_options {
   std::vector<std::string> scenarios;  ///< names; empty: all
   long long long_run_steps = 100000;
-  long max_study_steps = 1 << 16;
+  long max_study_steps = 1 << 14;  // h = t_end / 16384: ten halvings from the coarsest run
+  /// Time the long run's steps (seconds_per_step, the work-precision plot): not
+  /// reproducible, so off unless asked for.
+  bool timing = false;
   std::function<void(const std::string&)> progress;
 };
 
 engine_audit audit_engine(const engine_integrator& integrator, const engine_options& opt = {});
 
+/// A uniform solid, centred at the body origin, its axis (cylinder, capsule, cone) along z;
+/// or a compound body: two solid spheres of radius r and mass m/2 centred at (+-d, 0, 0).
+struct shape {
+  std::string name;  ///< box, sphere, cylinder, capsule, cone, ellipsoid, two_spheres
+  double mass = 1;
+  /// box: edges; sphere: (r); cylinder, cone: (r, height); capsule: (r, length of its
+  /// cylinder); ellipsoid: semi-axes; two_spheres: (r, d).
+  Eigen::Vector3d size{0, 0, 0};
+};
+
+/// The shapes every engine is asked for.
+std::vector<shape> shapes();
+
+/// A shape's principal moments about its centre of mass, ascending, from reference/solids.hpp
+/// (and the parallel-axis theorem, eq 160, for the compound) in mpfr50.
+Eigen::Vector3d exact_principal_moments(const shape& s);
+
+/// How an engine computes the inertia of its shapes from mass and dimensions.
+struct engine_shapes {
+  std::string engine;  ///< e.g. "mujoco"
+  std::string origin;  ///< the engine's functions used, and its version
+  /// The engine's principal moments (any order) of a shape; throws scenario_refused for a
+  /// shape the engine does not offer.
+  std::function<Eigen::Vector3d(const shape&)> moments;
+};
+
+/// One engine's inertia of one shape against the exact one.
+struct shape_audit {
+  std::string engine, shape, refused;
+  Eigen::Vector3d measured{0, 0, 0}, exact{0, 0, 0};  ///< ascending
+  double relative_error = 0;  ///< max over the moments of |measured - exact| / exact
+};
+
+std::vector<shape_audit> audit_shapes(const engine_shapes& engine);
+
 /// The report: a console table, JSON and Markdown.
-void print_engines(std::ostream& out, const std::vector<engine_audit>& audits);
-std::string engines_to_json(const std::vector<engine_audit>& audits);
-std::string engines_to_markdown(const std::vector<engine_audit>& audits);
+void print_engines(std::ostream& out, const std::vector<engine_audit>& audits,
+                   const std::vector<shape_audit>& shapes = {});
+std::string engines_to_json(const std::vector<engine_audit>& audits, const std::vector<shape_audit>& shapes = {});
+std::string engines_to_markdown(const std::vector<engine_audit>& audits,
+                                const std::vector<shape_audit>& shapes = {});
 std::vector<std::string> write_engine_report(const std::string& directory,
-                                             const std::vector<engine_audit>& audits);
+                                             const std::vector<engine_audit>& audits,
+                                             const std::vector<shape_audit>& shapes = {});
 
 }  // namespace mechcheck::audit

@@ -61,4 +61,22 @@ inline std::vector<engine_integrator> engines_found() {
   return all;
 }
 
+/// How each engine built computes the inertia of its shapes.
+inline std::vector<engine_shapes> shapes_found() {
+  std::vector<engine_shapes> all;
+#ifdef MECHCHECK_HAVE_MUJOCO
+  all.push_back(mujoco::shapes());
+#endif
+#ifdef MECHCHECK_HAVE_SIMBODY
+  all.push_back(simbody::shapes());
+#endif
+#ifdef MECHCHECK_HAVE_BULLET
+  all.push_back(bullet::shapes());
+#endif
+#ifdef MECHCHECK_HAVE_ODE
+  all.push_back(ode_engine::shapes());
+#endif
+  return all;
+}
+
 }  // namespace mechcheck::audit

@@ -17,15 +17,28 @@ namespace {
 thread_local std::string last_warning;
 void on_error(const char* msg) { throw error(std::string("MuJoCo error: ") + msg); }
 void on_warning(const char* msg) { last_warning = msg; }
+
+/// The run whose mj_step is under way on this thread (for the passive-force callback).
+thread_local const scenario* stepping = nullptr;
+void central_force(const mjModel*, mjData* d) {
+  if (!stepping || stepping->central == 0) return;
+  const Eigen::Vector3d x(d->qpos[0], d->qpos[1], d->qpos[2]);  // free joint: the centre of mass
+  const Eigen::Vector3d f = -stepping->mass * stepping->central / (x.norm() * x.squaredNorm()) * x;
+  for (int i = 0; i < 3; ++i) d->qfrc_passive[i] += f(i);  // the free joint's world-frame force
+}
+}  // namespace
+
 void install_handlers() {
   static const bool done = [] {
     mju_user_error = &on_error;
     mju_user_warning = &on_warning;
+    mjcb_passive = &central_force;
     return true;
   }();
   static_cast<void>(done);
 }
 
+namespace {
 /// A model from an MJCF string, through MuJoCo's virtual file system (no file written).
 mjModel* load(const std::string& xml) {
   install_handlers();
@@ -48,55 +61,46 @@ const char* integrator_xml(int integrator) {
 
 /// The MJCF of a scenario (see the header for the mapping).
 std::string mjcf(const scenario& s, int integrator) {
-  char opt[256];
-  std::snprintf(opt, sizeof opt, "<option timestep=\"0.01\" gravity=\"0 0 %.17g\" integrator=\"%s\"/>",
-                -s.gravity, integrator_xml(integrator));
-  std::string body;
-  char buf[512];
-  switch (s.kind) {
-    case scenario_kind::free_top:
-    case scenario_kind::free_top_near_axis:
-      std::snprintf(buf, sizeof buf,
-                    "<body><freejoint/><inertial pos=\"0 0 0\" mass=\"%.17g\" diaginertia=\"%.17g %.17g %.17g\"/></body>",
-                    s.mass, s.inertia(0), s.inertia(1), s.inertia(2));
-      body = buf;
-      break;
-    case scenario_kind::pendulum_small:
-    case scenario_kind::pendulum_large:
-      std::snprintf(buf, sizeof buf,
-                    "<body><joint type=\"hinge\" axis=\"0 1 0\"/><inertial pos=\"0 0 %.17g\" mass=\"%.17g\" "
-                    "diaginertia=\"1e-3 1e-3 1e-3\"/></body>",
-                    -s.length, s.mass);
-      body = buf;
-      break;
-    case scenario_kind::projectile:
-      std::snprintf(buf, sizeof buf,
-                    "<body><freejoint/><inertial pos=\"0 0 0\" mass=\"%.17g\" diaginertia=\"1 1 1\"/></body>", s.mass);
-      body = buf;
-      break;
-  }
-  return "<mujoco><compiler angle=\"radian\"/>" + std::string(opt) + "<worldbody>" + body + "</worldbody></mujoco>";
+  char buf[1024];
+  const char* joint = s.joint == joint_kind::free      ? "<freejoint/>"
+                      : s.joint == joint_kind::hinge_y ? "<joint type=\"hinge\" axis=\"0 1 0\"/>"
+                                                       : "<joint type=\"ball\"/>";
+  std::snprintf(buf, sizeof buf,
+                "<mujoco><compiler angle=\"radian\"/><option timestep=\"0.01\" gravity=\"0 0 %.17g\" "
+                "integrator=\"%s\"/><worldbody><body>%s<inertial pos=\"%.17g %.17g %.17g\" mass=\"%.17g\" "
+                "diaginertia=\"%.17g %.17g %.17g\"/></body></worldbody></mujoco>",
+                -s.gravity, integrator_xml(integrator), joint, s.com(0), s.com(1), s.com(2), s.mass,
+                s.inertia(0), s.inertia(1), s.inertia(2));
+  return buf;
+}
+
+void put_quaternion(const Eigen::Matrix3d& r, double* q) {
+  const Eigen::Quaterniond e(r);
+  q[0] = e.w(), q[1] = e.x(), q[2] = e.y(), q[3] = e.z();
 }
 
 class run final : public engine_run {
  public:
   run(const scenario& s, int integrator) : s_(s), name_(std::string("mujoco::") + integrator_xml(integrator)) {
+    if (s.central != 0 && s.joint != joint_kind::free)
+      throw scenario_refused(name_ + ": the central force is applied to a free body only");
     model_ = load(mjcf(s, integrator));
     data_ = mj_makeData(model_);
     if (!data_) throw error(name_ + ": mj_makeData failed");
-    switch (s.kind) {
-      case scenario_kind::free_top:
-      case scenario_kind::free_top_near_axis:
-        data_->qpos[3] = 1;  // identity quaternion (w, x, y, z)
-        for (int i = 0; i < 3; ++i) data_->qvel[3 + i] = s.omega0(i);  // body frame
+    const Eigen::Vector3d w_body = s.rotation0.transpose() * s.omega0;
+    switch (s.joint) {
+      case joint_kind::free:
+        for (int i = 0; i < 3; ++i) data_->qpos[i] = s.position0(i), data_->qvel[i] = s.velocity0(i);
+        put_quaternion(s.rotation0, data_->qpos + 3);
+        for (int i = 0; i < 3; ++i) data_->qvel[3 + i] = w_body(i);
         break;
-      case scenario_kind::pendulum_small:
-      case scenario_kind::pendulum_large:
-        data_->qpos[0] = s.theta0;
+      case joint_kind::hinge_y:
+        data_->qpos[0] = std::atan2(s.rotation0(0, 2), s.rotation0(0, 0));
+        data_->qvel[0] = s.omega0(1);
         break;
-      case scenario_kind::projectile:
-        data_->qpos[3] = 1;
-        for (int i = 0; i < 3; ++i) data_->qvel[i] = s.velocity0(i);  // world frame
+      case joint_kind::ball:
+        put_quaternion(s.rotation0, data_->qpos);
+        for (int i = 0; i < 3; ++i) data_->qvel[i] = w_body(i);
         break;
     }
     mj_forward(model_, data_);
@@ -114,6 +118,12 @@ class run final : public engine_run {
     ++steps_;
     model_->opt.timestep = h;
     last_warning.clear();
+    struct guard {
+      explicit guard(const scenario* s) { stepping = s; }
+      ~guard() { stepping = nullptr; }
+      guard(const guard&) = delete;
+      guard& operator=(const guard&) = delete;
+    } g(&s_);
     try {
       mj_step(model_, data_);
     } catch (const error& e) {
@@ -128,38 +138,20 @@ class run final : public engine_run {
         throw non_finite_error(name_ + ": step " + std::to_string(steps_) + ": qpos[" + std::to_string(i) + "] is not finite");
   }
 
-  engine_observation observe() const override {
-    engine_observation o;
-    switch (s_.kind) {
-      case scenario_kind::free_top:
-      case scenario_kind::free_top_near_axis: {
-        const Eigen::Vector3d w(data_->qvel[3], data_->qvel[4], data_->qvel[5]);
-        const Eigen::Vector3d m = s_.inertia.cwiseProduct(w);
-        const Eigen::Quaterniond q(data_->qpos[3], data_->qpos[4], data_->qpos[5], data_->qpos[6]);
-        o.observables = w;
-        o.energy = w.dot(m) / 2;
-        o.momentum = q.normalized().toRotationMatrix() * m;
-        break;
-      }
-      case scenario_kind::pendulum_small:
-      case scenario_kind::pendulum_large: {
-        const double theta = data_->qpos[0], rate = data_->qvel[0];
-        const double i_hinge = s_.mass * s_.length * s_.length + 1e-3;
-        o.observables.resize(2);
-        o.observables << theta, rate;
-        o.energy = i_hinge * rate * rate / 2 - s_.mass * s_.gravity * s_.length * std::cos(theta);
-        break;
-      }
-      case scenario_kind::projectile: {
-        o.observables.resize(6);
-        for (int i = 0; i < 3; ++i) o.observables(i) = data_->qpos[i];
-        for (int i = 0; i < 3; ++i) o.observables(3 + i) = data_->qvel[i];
-        const Eigen::Vector3d v = o.observables.tail(3);
-        o.energy = s_.mass * v.squaredNorm() / 2 + s_.mass * s_.gravity * data_->qpos[2];
-        break;
-      }
-    }
-    return o;
+  body_reading read() const override {
+    // The positions and velocities of the state mj_step left (its xpos and cvel are those
+    // of the step's start); mj_step recomputes them all before the next step.
+    mj_kinematics(model_, data_);
+    mj_comPos(model_, data_);
+    mj_comVel(model_, data_);
+    body_reading r;
+    r.rotation = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(data_->xmat + 9);
+    r.position = Eigen::Map<const Eigen::Vector3d>(data_->xipos + 3);
+    double v[6];
+    mj_objectVelocity(model_, data_, mjOBJ_BODY, 1, v, 0);  // (angular, linear) at xipos, world axes
+    r.omega = Eigen::Map<const Eigen::Vector3d>(v);
+    r.velocity = Eigen::Map<const Eigen::Vector3d>(v + 3);
+    return r;
   }
 
  private:
@@ -174,6 +166,40 @@ class run final : public engine_run {
 std::string version() {
   const int v = mj_version();
   return std::to_string(v / 100) + "." + std::to_string(v / 10 % 10) + "." + std::to_string(v % 10);
+}
+
+engine_shapes shapes() {
+  engine_shapes e;
+  e.engine = "mujoco";
+  e.origin = "MuJoCo " + version() + ": a body without <inertial> whose geoms carry the mass (inertiafromgeom); "
+             "mjModel::body_inertia after mj_loadXML";
+  e.moments = [](const shape& s) -> Eigen::Vector3d {
+    char geoms[512];
+    const double* z = s.size.data();
+    if (s.name == "box")
+      std::snprintf(geoms, sizeof geoms, "<geom type=\"box\" size=\"%.17g %.17g %.17g\" mass=\"%.17g\"/>", z[0] / 2,
+                    z[1] / 2, z[2] / 2, s.mass);
+    else if (s.name == "sphere")
+      std::snprintf(geoms, sizeof geoms, "<geom type=\"sphere\" size=\"%.17g\" mass=\"%.17g\"/>", z[0], s.mass);
+    else if (s.name == "cylinder" || s.name == "capsule")
+      std::snprintf(geoms, sizeof geoms, "<geom type=\"%s\" size=\"%.17g %.17g\" mass=\"%.17g\"/>", s.name.c_str(),
+                    z[0], z[1] / 2, s.mass);
+    else if (s.name == "ellipsoid")
+      std::snprintf(geoms, sizeof geoms, "<geom type=\"ellipsoid\" size=\"%.17g %.17g %.17g\" mass=\"%.17g\"/>",
+                    z[0], z[1], z[2], s.mass);
+    else if (s.name == "two_spheres")
+      std::snprintf(geoms, sizeof geoms,
+                    "<geom type=\"sphere\" size=\"%.17g\" pos=\"%.17g 0 0\" mass=\"%.17g\"/>"
+                    "<geom type=\"sphere\" size=\"%.17g\" pos=\"%.17g 0 0\" mass=\"%.17g\"/>",
+                    z[0], z[1], s.mass / 2, z[0], -z[1], s.mass / 2);
+    else
+      throw scenario_refused("mujoco: MuJoCo 2.2.2 has no " + s.name + " geom");
+    mjModel* m = load(std::string("<mujoco><worldbody><body><freejoint/>") + geoms + "</body></worldbody></mujoco>");
+    const Eigen::Vector3d out(m->body_inertia[3], m->body_inertia[4], m->body_inertia[5]);
+    mj_deleteModel(m);
+    return out;
+  };
+  return e;
 }
 
 std::vector<engine_integrator> integrators() {
@@ -197,6 +223,8 @@ std::vector<engine_integrator> integrators() {
                (i.id == mjINT_RK4 ? " (the name)" : " (a first-order method by its description)") +
                "; the model from an MJCF string, mj_step at fixed timestep";
     e.declared_order = i.order;
+    // "semi-implicit Euler" names the symplectic Euler method (Hairer, Lubich & Wanner 2006,
+    // section I.1.2) without saying so: no symplecticity is declared.
     const int id = i.id;
     e.start = [id](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, id); };
     out.push_back(std::move(e));

@@ -3,14 +3,20 @@
 /// mechcheck::audit_mujoco only where MuJoCo is found.
 ///
 /// Units SI; z up, gravity along -z. Each scenario is an MJCF string loaded through
-/// MuJoCo's virtual file system:
-///   - free tops: one body with a free joint and an explicit <inertial> (mass 1, principal
-///     moments on the body axes), no geoms (no contacts), gravity 0. qpos = (x, y, z, w,
-///     qx, qy, qz), qvel = (linear velocity in the world frame, angular velocity in the
-///     body frame): the observable is qvel[3..5]; the world angular momentum R(q) I omega;
-///   - pendulums: a hinge about y through the origin, the bob's centre at (0, 0, -l) with
-///     inertia 1e-3 about it; qpos[0] = theta (0 hanging), qvel[0] = thetadot;
-///   - projectile: a free body started with world velocity v0 at the origin.
+/// MuJoCo's virtual file system: one body with an explicit <inertial> (the scenario's mass,
+/// principal moments on the body axes, centre of mass at `com`), no geoms (no contacts),
+/// held by the scenario's joint:
+///   - free: <freejoint/>; qpos = (centre of mass, quaternion w x y z), qvel = (linear
+///     velocity in the world frame, angular velocity in the body frame);
+///   - hinge_y: <joint type="hinge" axis="0 1 0"/> at the origin; qpos[0] = theta,
+///     qvel[0] = thetadot;
+///   - ball: <joint type="ball"/> at the origin; qpos = quaternion, qvel = angular velocity
+///     in the body frame.
+/// The state is read back from mj_kinematics, mj_comPos and mj_comVel (mj_step leaves
+/// xpos and cvel at the step's start): xmat, xipos and mj_objectVelocity at the centre of
+/// mass. The central force of the Kepler scenario is added to qfrc_passive by an
+/// mjcb_passive callback, which MuJoCo calls at every evaluation of the forces (each RK4
+/// stage included).
 /// The integrators are mjINT_EULER, mjINT_RK4 and mjINT_IMPLICIT, named mujoco::Euler,
 /// mujoco::RK4 and mujoco::implicit, each with mjmodel.h's words for it.
 ///
@@ -29,7 +35,13 @@ namespace mechcheck::audit::mujoco {
 /// "2.2.2": mj_version() of the library linked.
 std::string version();
 
+/// Install the error and warning handlers (done by every run; idempotent).
+void install_handlers();
+
 /// mujoco::Euler, mujoco::RK4, mujoco::implicit.
 std::vector<engine_integrator> integrators();
+
+/// How mujoco computes the inertia of its shapes (engines.hpp, shapes()).
+engine_shapes shapes();
 
 }  // namespace mechcheck::audit::mujoco

@@ -4,17 +4,12 @@
 /// mechcheck::audit_ode only where `pkg-config ode` finds it.
 ///
 /// Units SI; z up, gravity along -z (dWorldSetGravity). ODE's body state: position of
-/// the centre of mass, rotation matrix R (dBodyGetRotation, 3x4 row-major), linear and
-/// angular velocity in the world frame (dBodyGetAngularVel); the adapter reads the body
-/// angular velocity as R^T omega_world. The scenarios:
-///   - free tops: one body (dMassSetParameters with the principal moments on the body
-///     axes), no joints, no geoms, gravity 0;
-///   - pendulums: a hinge joint to the world (dJointAttach(j, body, 0)) with anchor at the
-///     origin and axis y; the bob's centre at l (-sin theta0, 0, -cos theta0), rotated by
-///     theta0 about y; the observables dJointGetHingeAngle and dJointGetHingeAngleRate,
-///     the angle measured from the attachment, so the bob is attached hanging and then
-///     turned to theta0; ERP and CFM are ODE's defaults;
-///   - projectile: a free body with linear velocity v0.
+/// the centre of mass (ODE keeps it at the body's origin), rotation matrix R
+/// (dBodyGetRotation, 3x4 row-major), linear and angular velocity in the world frame. One
+/// body (dMassSetParameters with the principal moments on the body axes), no geoms, set to
+/// the scenario's state. Joints to the world (dJointAttach(j, body, 0)) at the origin:
+/// hinge_y a hinge joint with axis y, ball a ball joint; ERP and CFM are ODE's defaults.
+/// The central force of the Kepler scenario is dBodyAddForce before each step.
 /// Integrators: dWorldStep ("big matrix", objects.h: "currently the most accurate
 /// method") and dWorldQuickStep (objects.h: "less accurate"), each with the gyroscopic
 /// term on (ODE's default) or off (dBodySetGyroscopicMode), and the orientation update
@@ -36,5 +31,8 @@ std::string version();
 
 /// The eight combinations of step function, gyroscopic mode and rotation mode.
 std::vector<engine_integrator> integrators();
+
+/// How ode computes the inertia of its shapes (engines.hpp, shapes()).
+engine_shapes shapes();
 
 }  // namespace mechcheck::audit::ode_engine

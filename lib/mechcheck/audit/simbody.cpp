@@ -15,45 +15,57 @@ namespace bridge = simbody_bridge;
 
 struct declared {
   const char* name;
-  const char* words;  ///< the header's own words on the order
+  const char* words;  ///< the header's own words on the order (and symplecticity)
   std::optional<int> order;
+  std::optional<bool> symplectic;
 };
 
 /// The headers' words, in the bridge's order of integrators.
 const declared claims[] = {
-    {"ExplicitEuler", "ExplicitEulerIntegrator.h: \"error controlled, first order explicit integrator\"", 1},
-    {"RungeKutta2", "RungeKutta2Integrator.h: \"second order, two stage explicit integrator\"", 2},
-    {"RungeKutta3", "RungeKutta3Integrator.h: \"third order, three stage explicit integrator\"", 3},
-    {"RungeKuttaMerson", "RungeKuttaMersonIntegrator.h: \"error controlled, fourth order explicit integrator\"", 4},
-    {"RungeKuttaFeldberg", "RungeKuttaFeldbergIntegrator.h: \"error controlled, fifth order explicit integrator\"", 5},
-    {"SemiExplicitEuler", "SemiExplicitEulerIntegrator.h: \"a first order method\"", 1},
-    {"SemiExplicitEuler2", "SemiExplicitEuler2Integrator.h: \"variable-step, first-order semi-explicit\"", 1},
-    {"Verlet", "VerletIntegrator.h: \"It is a third order, semi-explicit integrator\"", 3},
-    {"CPodes", "CPodesIntegrator.h: variable order (BDF or Adams); no order stated", std::nullopt},
+    {"ExplicitEuler", "ExplicitEulerIntegrator.h: \"error controlled, first order explicit integrator\"", 1, {}},
+    {"RungeKutta2", "RungeKutta2Integrator.h: \"second order, two stage explicit integrator\"", 2, {}},
+    {"RungeKutta3", "RungeKutta3Integrator.h: \"third order, three stage explicit integrator\"", 3, {}},
+    {"RungeKuttaMerson", "RungeKuttaMersonIntegrator.h: \"error controlled, fourth order explicit integrator\"", 4, {}},
+    {"RungeKuttaFeldberg", "RungeKuttaFeldbergIntegrator.h: \"error controlled, fifth order explicit integrator\"", 5, {}},
+    {"SemiExplicitEuler",
+     "SemiExplicitEulerIntegrator.h: \"the fixed-step Semi-Explicit Euler method, also known as Semi-Implicit "
+     "Euler or Symplectic Euler\", \"a first order method\"",
+     1, true},
+    {"SemiExplicitEuler2",
+     "SemiExplicitEuler2Integrator.h: \"variable-step, first-order semi-explicit Euler method, also known as "
+     "semi-implicit Euler or symplectic Euler\"",
+     1, true},
+    {"Verlet",
+     "VerletIntegrator.h: \"It is a third order, semi-explicit integrator\", \"When this integrator is used "
+     "with fixed size time steps, it is symplectic\"",
+     3, true},
+    {"CPodes", "CPodesIntegrator.h: variable order (BDF or Adams); no order stated", std::nullopt, {}},
 };
+
+/// Simbody's exception texts run over several lines (file and line, then the message):
+/// one line for a table cell, at most 240 characters.
+std::string one_line(const char* text) {
+  std::string out;
+  for (const char* c = text; *c; ++c) out += *c == '\n' ? ' ' : *c;
+  return out.size() > 240 ? out.substr(0, 240) + "..." : out;
+}
 
 class run final : public engine_run {
  public:
   run(const scenario& s, int integrator) : s_(s), name_(std::string("simbody::") + bridge::integrator_name(integrator)) {
     bridge::setup b;
     b.integrator = integrator;
+    b.joint = s.joint == joint_kind::free ? 0 : s.joint == joint_kind::hinge_y ? 1 : 2;
     b.mass = s.mass;
     b.gravity = s.gravity;
-    switch (s.kind) {
-      case scenario_kind::free_top:
-      case scenario_kind::free_top_near_axis:
-        for (int i = 0; i < 3; ++i) b.inertia[i] = s.inertia(i), b.omega0[i] = s.omega0(i);
-        break;
-      case scenario_kind::pendulum_small:
-      case scenario_kind::pendulum_large:
-        b.pin = true;
-        b.length = s.length;
-        b.theta0 = s.theta0;
-        for (double& i : b.inertia) i = 1e-3;
-        break;
-      case scenario_kind::projectile:
-        for (int i = 0; i < 3; ++i) b.velocity0[i] = s.velocity0(i);
-        break;
+    b.central = s.central;
+    for (int i = 0; i < 3; ++i) {
+      b.inertia[i] = s.inertia(i);
+      b.com[i] = s.com(i);
+      b.position0[i] = s.position0(i);
+      b.velocity0[i] = s.velocity0(i);
+      b.omega0[i] = s.omega0(i);
+      for (int j = 0; j < 3; ++j) b.rotation0[3 * i + j] = s.rotation0(i, j);
     }
     try {
       model_ = std::make_unique<bridge::model>(b);
@@ -70,42 +82,20 @@ class run final : public engine_run {
     try {
       model_->step(h);
     } catch (const std::exception& e) {
-      throw convergence_error(name_ + ": step " + std::to_string(steps_) + ": Simbody: " + e.what());
+      throw convergence_error(name_ + ": step " + std::to_string(steps_) + ": Simbody: " + one_line(e.what()));
     }
     for (int i = 0; i < model_->nq(); ++i)
       if (!std::isfinite(model_->q()[i]))
         throw non_finite_error(name_ + ": step " + std::to_string(steps_) + ": q[" + std::to_string(i) + "] is not finite");
   }
 
-  engine_observation observe() const override {
+  body_reading read() const override {
     const bridge::reading r = model_->read();
-    engine_observation o;
-    const Eigen::Matrix3d rot = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(r.rotation);
-    const Eigen::Vector3d w_world(r.omega_world[0], r.omega_world[1], r.omega_world[2]);
-    const Eigen::Vector3d x(r.position[0], r.position[1], r.position[2]), v(r.velocity[0], r.velocity[1], r.velocity[2]);
-    switch (s_.kind) {
-      case scenario_kind::free_top:
-      case scenario_kind::free_top_near_axis: {
-        const Eigen::Vector3d w = rot.transpose() * w_world, m = s_.inertia.cwiseProduct(w);
-        o.observables = w;
-        o.energy = w.dot(m) / 2;
-        o.momentum = rot * m;
-        break;
-      }
-      case scenario_kind::pendulum_small:
-      case scenario_kind::pendulum_large: {
-        const double i_hinge = s_.mass * s_.length * s_.length + 1e-3;
-        o.observables.resize(2);
-        o.observables << r.q, r.u;
-        o.energy = i_hinge * r.u * r.u / 2 - s_.mass * s_.gravity * s_.length * std::cos(r.q);
-        break;
-      }
-      case scenario_kind::projectile:
-        o.observables.resize(6);
-        o.observables << x, v;
-        o.energy = s_.mass * v.squaredNorm() / 2 + s_.mass * s_.gravity * x(2);
-        break;
-    }
+    body_reading o;
+    o.rotation = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(r.rotation);
+    o.omega = Eigen::Map<const Eigen::Vector3d>(r.omega_world);
+    o.position = Eigen::Map<const Eigen::Vector3d>(r.position);
+    o.velocity = Eigen::Map<const Eigen::Vector3d>(r.velocity);
     return o;
   }
 
@@ -119,6 +109,20 @@ class run final : public engine_run {
 
 std::string version() { return bridge::version(); }
 
+engine_shapes shapes() {
+  engine_shapes e;
+  e.engine = "simbody";
+  e.origin = "Simbody " + version() + ": mass times UnitInertia::brick, sphere, cylinderAlongZ, ellipsoid; the "
+             "compound by Inertia::shiftFromMassCenter";
+  e.moments = [](const shape& s) -> Eigen::Vector3d {
+    double out[3];
+    if (!bridge::shape_moments(s.name, s.mass, s.size.data(), out))
+      throw scenario_refused("simbody: Simbody 3.7 has no UnitInertia helper for a " + s.name);
+    return {out[0], out[1], out[2]};
+  };
+  return e;
+}
+
 std::vector<engine_integrator> integrators() {
   std::vector<engine_integrator> out;
   for (int i = 0; i < bridge::integrator_count(); ++i) {
@@ -130,6 +134,7 @@ std::vector<engine_integrator> integrators() {
     e.origin = "Simbody " + version() + " " + d.name + "Integrator at a fixed step (setFixedStepSize, stepTo); " +
                d.words + (d.order ? "; declared order " + std::to_string(*d.order) : std::string());
     e.declared_order = d.order;
+    e.declared_symplectic = d.symplectic;
     e.start = [i](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, i); };
     out.push_back(std::move(e));
   }

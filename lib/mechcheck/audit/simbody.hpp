@@ -2,14 +2,15 @@
 /// Simbody (Debian libsimbody-dev 3.7) under the engine audit (engines.hpp). Built into
 /// mechcheck::audit_simbody only where Simbody's CMake config is found.
 ///
-/// Units SI; z up, Force::Gravity along -z. The scenarios:
-///   - free tops and the projectile: a MobilizedBody::Free (quaternions) from Ground with
-///     a Body::Rigid of the scenario's mass and principal moments; its u set by
-///     setUToFitAngularVelocity / setUToFitLinearVelocity; read back through
-///     getBodyRotation, getBodyAngularVelocity (ground frame: the body angular velocity is
-///     R^T w), getBodyOriginLocation and getBodyOriginVelocity;
-///   - pendulums: a MobilizedBody::Pin whose frames put its z axis along world y, the bob
-///     (inertia 1e-3 about its centre) l below the pivot at q = 0; theta = q, thetadot = u.
+/// Units SI; z up, Force::Gravity along -z. A Body::Rigid of the scenario's mass, centre
+/// of mass and central inertia (shifted to the body origin, as MassProperties wants it),
+/// on a mobilizer from Ground: free a MobilizedBody::Free (quaternions); hinge_y a
+/// MobilizedBody::Pin whose frames put its z axis along world y; ball a
+/// MobilizedBody::Ball at the origin. The state set by setQToFitTransform (or the pin's
+/// angle) and setUToFitVelocity; read back through getBodyRotation,
+/// findMassCenterLocationInGround, findStationVelocityInGround of the centre of mass and
+/// getBodyAngularVelocity (ground frame). The central force of the Kepler scenario is a
+/// Force::Custom evaluated wherever Simbody evaluates forces (each stage).
 /// Integrators: every one Simbody ships -- ExplicitEuler, RungeKutta2, RungeKutta3,
 /// RungeKuttaMerson, RungeKuttaFeldberg, SemiExplicitEuler, SemiExplicitEuler2, Verlet
 /// and CPodes -- at a fixed step (Integrator::setFixedStepSize, stepTo), each declaring
@@ -32,5 +33,8 @@ namespace mechcheck::audit::simbody {
 std::string version();
 
 std::vector<engine_integrator> integrators();
+
+/// How simbody computes the inertia of its shapes (engines.hpp, shapes()).
+engine_shapes shapes();
 
 }  // namespace mechcheck::audit::simbody

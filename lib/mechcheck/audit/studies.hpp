@@ -180,7 +180,8 @@ class growth_recorder {
   std::optional<double> exponent(int first = 6) const {
     double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
     for (int w = first; w < static_cast<int>(sum_.size()); ++w) {
-      if (count_[w] == 0 || sum_[w] == 0) continue;
+      // A window whose squares overflowed (a run on its way to diverging) has no RMS.
+      if (count_[w] == 0 || sum_[w] == 0 || !std::isfinite(sum_[w])) continue;
       // The window's time is the mean of its samples' steps: 1.5 2^w for a full window,
       // less for the last one when the run ends inside it (taking 1.5 2^w there biased a
       // linear drift's exponent to 0.977 over 2^17 steps).
@@ -193,6 +194,13 @@ class growth_recorder {
     }
     if (n < 3) return std::nullopt;
     return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  }
+  /// The mean step of each window w = 0, 1, ... (0 where none was recorded).
+  std::vector<double> window_steps() const {
+    std::vector<double> out(time_.size(), 0.0);
+    for (std::size_t w = 0; w < time_.size(); ++w)
+      if (count_[w] > 0) out[w] = time_[w] / count_[w];
+    return out;
   }
   /// The RMS error of each window w = 0, 1, ... (0 where none was recorded).
   std::vector<double> window_rms() const {

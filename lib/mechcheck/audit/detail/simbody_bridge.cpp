@@ -3,6 +3,7 @@
 
 #include <Simbody.h>
 
+#include <cmath>
 #include <functional>
 #include <stdexcept>
 #include <type_traits>
@@ -37,6 +38,26 @@ const std::vector<entry>& entries() {
 }
 }  // namespace
 
+bool shape_moments(const std::string& name, double mass, const double z[3], double out[3]) {
+  Inertia inertia;
+  if (name == "box")
+    inertia = mass * UnitInertia::brick(z[0] / 2, z[1] / 2, z[2] / 2);
+  else if (name == "sphere")
+    inertia = mass * UnitInertia::sphere(z[0]);
+  else if (name == "cylinder")
+    inertia = mass * UnitInertia::cylinderAlongZ(z[0], z[1] / 2);
+  else if (name == "ellipsoid")
+    inertia = mass * UnitInertia::ellipsoid(z[0], z[1], z[2]);
+  else if (name == "two_spheres") {
+    const Inertia one = (mass / 2) * UnitInertia::sphere(z[0]);
+    inertia = one.shiftFromMassCenter(Vec3(z[1], 0, 0), mass / 2) + one.shiftFromMassCenter(Vec3(-z[1], 0, 0), mass / 2);
+  } else
+    return false;
+  const Vec3 moments = inertia.getMoments();
+  for (int i = 0; i < 3; ++i) out[i] = moments[i];
+  return true;
+}
+
 int integrator_count() { return static_cast<int>(entries().size()); }
 const char* integrator_name(int i) { return entries().at(static_cast<std::size_t>(i)).name; }
 std::string version() {
@@ -45,13 +66,29 @@ std::string version() {
   return std::to_string(major) + "." + std::to_string(minor);
 }
 
+/// The Kepler scenario's attraction -m k x / |x|^3 on the centre of mass.
+class central_force : public Force::Custom::Implementation {
+ public:
+  central_force(const MobilizedBody& body, Real mk) : body_(body), mk_(mk) {}
+  void calcForce(const State& s, Vector_<SpatialVec>& body_forces, Vector_<Vec3>&, Vector&) const override {
+    const Vec3 x = body_.findMassCenterLocationInGround(s);
+    body_.applyForceToBodyPoint(s, body_.getBodyMassCenterStation(s), -mk_ / (x.norm() * x.normSqr()) * x,
+                                body_forces);
+  }
+  Real calcPotentialEnergy(const State& s) const override {
+    return -mk_ / body_.findMassCenterLocationInGround(s).norm();
+  }
+
+ private:
+  MobilizedBody body_;  // a handle: copies refer to the same body
+  Real mk_;
+};
+
 struct model::impl {
   MultibodySystem system;
   SimbodyMatterSubsystem matter{system};
   GeneralForceSubsystem forces{system};
-  MobilizedBody::Free free;
-  MobilizedBody::Pin pin;
-  bool is_pin = false;
+  MobilizedBody body;
   State state;
   std::unique_ptr<Integrator> integrator;
   bool started = false;
@@ -61,24 +98,36 @@ struct model::impl {
 model::model(const setup& s) : p_(new impl) {
   impl& m = *p_;
   if (s.gravity != 0) Force::Gravity(m.forces, m.matter, UnitVec3(0, 0, -1), s.gravity);
-  const Body::Rigid body(MassProperties(s.mass, Vec3(0), Inertia(Vec3(s.inertia[0], s.inertia[1], s.inertia[2]))));
-  m.is_pin = s.pin;
-  if (s.pin) {
-    // A pin turns about the common z axis of its frames: F on the ground with z along world
-    // y (R_x(-pi/2)), M on the bob l above its centre: q = 0 hangs the bob at (0, 0, -l) and
-    // q = theta turns it by theta about world y.
-    m.pin = MobilizedBody::Pin(m.matter.Ground(), Transform(Rotation(-Pi / 2, XAxis)), body,
-                               Transform(Rotation(-Pi / 2, XAxis), Vec3(0, 0, s.length)));
+  const Vec3 com(s.com[0], s.com[1], s.com[2]);
+  const Inertia central_inertia(Vec3(s.inertia[0], s.inertia[1], s.inertia[2]));
+  const Body::Rigid body(MassProperties(s.mass, com, central_inertia.shiftFromMassCenter(com, s.mass)));
+  const Rotation r0(Mat33(s.rotation0[0], s.rotation0[1], s.rotation0[2], s.rotation0[3], s.rotation0[4],
+                          s.rotation0[5], s.rotation0[6], s.rotation0[7], s.rotation0[8]));
+  const Vec3 w0(s.omega0[0], s.omega0[1], s.omega0[2]);
+  if (s.joint == 1) {
+    // A pin turns about the common z axis of its frames: F on the ground and M on the body
+    // both with z along world y (R_x(-pi/2)) at the origin: q = theta turns the body by
+    // theta about world y.
+    m.body = MobilizedBody::Pin(m.matter.Ground(), Transform(Rotation(-Pi / 2, XAxis)), body,
+                                Transform(Rotation(-Pi / 2, XAxis)));
+  } else if (s.joint == 2) {
+    m.body = MobilizedBody::Ball(m.matter.Ground(), Transform(), body, Transform());
   } else {
-    m.free = MobilizedBody::Free(m.matter.Ground(), Transform(), body, Transform());
+    m.body = MobilizedBody::Free(m.matter.Ground(), Transform(), body, Transform());
   }
+  if (s.central != 0) Force::Custom(m.forces, new central_force(m.body, s.mass * s.central));
   m.state = m.system.realizeTopology();
   m.system.realizeModel(m.state);
-  if (s.pin) {
-    m.pin.setOneQ(m.state, 0, s.theta0);
+  if (s.joint == 1) {
+    m.body.setOneQ(m.state, 0, std::atan2(s.rotation0[2], s.rotation0[0]));
+    m.body.setOneU(m.state, 0, w0[1]);
+  } else if (s.joint == 2) {
+    m.body.setQToFitRotation(m.state, r0);
+    m.body.setUToFitAngularVelocity(m.state, w0);
   } else {
-    m.free.setUToFitAngularVelocity(m.state, Vec3(s.omega0[0], s.omega0[1], s.omega0[2]));
-    m.free.setUToFitLinearVelocity(m.state, Vec3(s.velocity0[0], s.velocity0[1], s.velocity0[2]));
+    // The free body's origin is its centre of mass (com = 0).
+    m.body.setQToFitTransform(m.state, Transform(r0, Vec3(s.position0[0], s.position0[1], s.position0[2])));
+    m.body.setUToFitVelocity(m.state, SpatialVec(w0, Vec3(s.velocity0[0], s.velocity0[1], s.velocity0[2])));
   }
 #ifdef MECHCHECK_SIMBODY_WITH_SUNDIALS
   if (std::string(entries().at(static_cast<std::size_t>(s.integrator)).name) == "CPodes")
@@ -115,21 +164,15 @@ reading model::read() const {
   State st = m.started ? m.integrator->getState() : m.state;
   m.system.realize(st, Stage::Velocity);
   reading r;
-  const MobilizedBody& b = m.is_pin ? static_cast<const MobilizedBody&>(m.pin) : m.free;
-  const Rotation& rot = b.getBodyRotation(st);
+  const Rotation& rot = m.body.getBodyRotation(st);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) r.rotation[3 * i + j] = rot[i][j];
-  const Vec3& w = b.getBodyAngularVelocity(st);
-  const Vec3& x = b.getBodyOriginLocation(st);
-  const Vec3& v = b.getBodyOriginVelocity(st);
+  const Vec3& w = m.body.getBodyAngularVelocity(st);
+  const Vec3 x = m.body.findMassCenterLocationInGround(st), v = m.body.findStationVelocityInGround(st, m.body.getBodyMassCenterStation(st));
   for (int i = 0; i < 3; ++i) {
     r.omega_world[i] = w[i];
     r.position[i] = x[i];
     r.velocity[i] = v[i];
-  }
-  if (m.is_pin) {
-    r.q = m.pin.getOneQ(st, 0);
-    r.u = m.pin.getOneU(st, 0);
   }
   return r;
 }

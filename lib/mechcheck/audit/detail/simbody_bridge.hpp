@@ -15,24 +15,30 @@ class refused : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The scenario in the bridge's standard types (engines.hpp's scenario, see there).
 struct setup {
-  bool pin = false;  ///< a pin about world y (pendulum), else a free body
+  int joint = 0;  ///< 0 free, 1 a pin about world y at the origin, 2 a ball at the origin
   double mass = 1;
   double inertia[3] = {1, 1, 1};  ///< principal moments about the centre of mass
+  double com[3] = {0, 0, 0};      ///< centre of mass in the body frame
   double gravity = 0;             ///< along -z
-  double length = 1;              ///< pin: pivot to centre of mass
-  double theta0 = 0;              ///< pin: initial angle
-  double omega0[3] = {0, 0, 0};   ///< free: initial angular velocity (world = body)
-  double velocity0[3] = {0, 0, 0};
+  double central = 0;             ///< k of the central force -m k x / |x|^3
+  double rotation0[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  ///< body to world, row-major
+  double position0[3] = {0, 0, 0}, velocity0[3] = {0, 0, 0};  ///< centre of mass
+  double omega0[3] = {0, 0, 0};                                ///< world frame
   int integrator = 0;             ///< index into the list below
 };
 
 struct reading {
   double rotation[9];     ///< body to world, row-major
   double omega_world[3];  ///< angular velocity in the world frame
-  double position[3], velocity[3];
-  double q = 0, u = 0;  ///< pin angle and rate
+  double position[3], velocity[3];  ///< of the centre of mass
 };
+
+/// Principal moments of a shape by Simbody's UnitInertia helpers (sphere, brick,
+/// cylinderAlongZ, ellipsoid; the compound by Inertia::shiftFromMassCenter): false for a
+/// shape Simbody has no helper for.
+bool shape_moments(const std::string& name, double mass, const double size[3], double out[3]);
 
 int integrator_count();
 const char* integrator_name(int i);
