@@ -351,7 +351,9 @@ TEST(engines, every_adapter_starts_each_scenario_at_its_exact_state) {
       try {
         run = e.start(s);
       } catch (const audit::scenario_refused& r) {
-        EXPECT_EQ(e.name, "simbody::CPodes") << r.what();
+        // CPodes where SUNDIALS is linked; Bullet's btMultiBody adapter builds joints only.
+        EXPECT_TRUE(e.name == "simbody::CPodes" || (e.name == "bullet::multibody" && s.joint == audit::joint_kind::free))
+            << r.what();
         continue;
       }
       const Eigen::VectorXd x = audit::observe(s, run->read()).observables, exact = s.exact(0);
@@ -373,7 +375,7 @@ TEST(engines, every_adapter_advances_its_clock_by_h_a_step) {
     try {
       run = e.start(s);
     } catch (const audit::scenario_refused& r) {
-      EXPECT_EQ(e.name, "simbody::CPodes") << r.what();
+      EXPECT_TRUE(e.name == "simbody::CPodes" || e.name == "bullet::multibody") << r.what();
       continue;
     }
     try {

@@ -77,9 +77,10 @@ int main(int argc, char** argv) {
                  "physics-engine integrators to audit on the scenarios with exact references, "
                  "as shell patterns (e.g. 'mujoco::*'); with no --stepper, --tableau or --driver "
                  "only the engines are audited");
-  std::vector<std::string> engine_scenarios;
+  std::vector<std::string> engine_scenarios, scenario_names;
+  for (const auto& s : audit::scenarios()) scenario_names.push_back(s.name);
   app.add_option("--scenario", engine_scenarios, "engine scenarios (default all)")
-      ->check(CLI::IsMember({"free_top", "free_top_near_axis", "pendulum_small", "pendulum_large", "projectile"}));
+      ->check(CLI::IsMember(scenario_names));
   long long engine_long_run_steps = 100000;
   app.add_option("--engine-long-run-steps", engine_long_run_steps, "steps of the engines' long run (0: none)")
       ->check(CLI::Range(0LL, 100000000LL));

@@ -1,5 +1,8 @@
 #include "mechcheck/audit/bullet.hpp"
 
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
+#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <btBulletDynamicsCommon.h>
 
 #include <cmath>
@@ -7,6 +10,7 @@
 #include <string>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 static_assert(sizeof(btScalar) == sizeof(double), "mechcheck's Bullet adapter needs bullet-float64");
 
@@ -118,6 +122,90 @@ class run final : public engine_run {
   std::unique_ptr<btTypedConstraint> joint_;
   long long steps_ = 0;
 };
+/// A jointed scenario as one btMultiBody link on a fixed base (Featherstone's articulated
+/// body algorithm in joint coordinates): hinge_y a revolute joint, ball a spherical one.
+class multibody_run final : public engine_run {
+ public:
+  explicit multibody_run(const scenario& s) : s_(s) {
+    if (s.joint == joint_kind::free)
+      throw scenario_refused(std::string(name) + ": " + s.name + " is a free body; this adapter builds joints only");
+    config_ = std::make_unique<btDefaultCollisionConfiguration>();
+    dispatcher_ = std::make_unique<btCollisionDispatcher>(config_.get());
+    broadphase_ = std::make_unique<btDbvtBroadphase>();
+    solver_ = std::make_unique<btMultiBodyConstraintSolver>();
+    world_ = std::make_unique<btMultiBodyDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
+                                                         config_.get());
+    world_->setGravity(btVector3(0, 0, -s.gravity));
+    body_ = std::make_unique<btMultiBody>(1, 1, btVector3(1, 1, 1), true, false);
+    const btQuaternion none(0, 0, 0, 1);
+    if (s.joint == joint_kind::hinge_y) {
+      body_->setupRevolute(0, s.mass, bt(s.inertia), -1, none, btVector3(0, 1, 0), btVector3(0, 0, 0), bt(s.com));
+    } else {
+      body_->setupSpherical(0, s.mass, bt(s.inertia), -1, none, btVector3(0, 0, 0), bt(s.com));
+    }
+    body_->finalizeMultiDof();
+    body_->setLinearDamping(0);  // the defaults are 0.04
+    body_->setAngularDamping(0);
+    body_->setCanSleep(false);
+    world_->addMultiBody(body_.get());
+    if (s.joint == joint_kind::hinge_y) {
+      body_->setJointPos(0, std::atan2(s.rotation0(0, 2), s.rotation0(0, 0)));
+      body_->setJointVel(0, s.omega0(1));
+    } else {
+      // The joint's quaternion is the link's orientation in its parent (here the world): R0
+      // (checked by reading the frame back through localFrameToWorld).
+      const Eigen::Quaterniond q(s.rotation0);
+      const double pos[4] = {q.x(), q.y(), q.z(), q.w()};
+      const Eigen::Vector3d w_link = s.rotation0.transpose() * s.omega0;  // in the link's frame
+      const double vel[3] = {w_link(0), w_link(1), w_link(2)};
+      body_->setJointPosMultiDof(0, pos);
+      body_->setJointVelMultiDof(0, vel);
+    }
+    body_->updateCollisionObjectWorldTransforms(scratch_q_, scratch_m_);
+  }
+  ~multibody_run() override {
+    if (body_) world_->removeMultiBody(body_.get());
+  }
+  multibody_run(const multibody_run&) = delete;
+  multibody_run& operator=(const multibody_run&) = delete;
+
+  void step(double h) override {
+    if (!(h > 0 && std::isfinite(h))) throw domain_error(std::string(name) + ": the step must be positive, got " + to_text(h));
+    ++steps_;
+    world_->stepSimulation(h, 0);
+    const body_reading r = read();
+    if (!r.position.allFinite() || !r.omega.allFinite())
+      throw non_finite_error(std::string(name) + ": step " + std::to_string(steps_) + ": the link's state is not finite");
+  }
+
+  body_reading read() const override {
+    body_reading r;
+    r.rotation = mat(body_->localFrameToWorld(0, btMatrix3x3::getIdentity()));
+    r.position = vec(body_->localPosToWorld(0, btVector3(0, 0, 0)));  // the link's frame is at its centre
+    // The link's angular velocity from Bullet's own kinematics, in the link's frame.
+    btAlignedObjectArray<btVector3> omega, v;
+    omega.resize(2);
+    v.resize(2);
+    body_->compTreeLinkVelocities(&omega[0], &v[0]);
+    r.omega = r.rotation * vec(omega[1]);
+    r.velocity = r.omega.cross(r.position);  // the pivot is fixed at the origin
+    return r;
+  }
+
+  static constexpr const char* name = "bullet::multibody";
+
+ private:
+  scenario s_;
+  std::unique_ptr<btDefaultCollisionConfiguration> config_;
+  std::unique_ptr<btCollisionDispatcher> dispatcher_;
+  std::unique_ptr<btBroadphaseInterface> broadphase_;
+  std::unique_ptr<btMultiBodyConstraintSolver> solver_;
+  std::unique_ptr<btMultiBodyDynamicsWorld> world_;
+  std::unique_ptr<btMultiBody> body_;
+  btAlignedObjectArray<btQuaternion> scratch_q_;
+  btAlignedObjectArray<btVector3> scratch_m_;
+  long long steps_ = 0;
+};
 }  // namespace
 
 std::string version() {
@@ -177,6 +265,13 @@ std::vector<engine_integrator> integrators() {
     e.start = [mode](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, *mode); };
     out.push_back(std::move(e));
   }
+  engine_integrator m;
+  m.name = multibody_run::name;
+  m.origin = "Bullet " + version() + " (bullet-float64), btMultiBody with one link on a fixed base (setupRevolute "
+             "for a hinge, setupSpherical for a ball joint; damping 0) in a btMultiBodyDynamicsWorld, "
+             "stepSimulation(h, 0); Bullet states no order; free bodies refused";
+  m.start = [](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<multibody_run>(s); };
+  out.push_back(std::move(m));
   return out;
 }
 

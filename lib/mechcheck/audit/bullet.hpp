@@ -13,6 +13,12 @@
 /// btHingeConstraint to the world with its pivot at -com in the body frame and its axis
 /// R0^T y; ball a btPoint2PointConstraint at -com. The central force of the Kepler
 /// scenario is applyCentralForce at the step's start (Bullet clears forces each step).
+/// bullet::multibody: the jointed scenarios as one btMultiBody link on a fixed base
+/// (Featherstone's algorithm in joint coordinates, btMultiBodyDynamicsWorld, damping set
+/// to 0 from its default 0.04): hinge_y by setupRevolute about y, ball by setupSpherical
+/// (its joint quaternion the link's orientation R0, its rates in the link's frame); the
+/// state read back through localFrameToWorld, localPosToWorld and compTreeLinkVelocities.
+/// Free bodies are refused.
 /// Integrators: the gyroscopic-force modes of btRigidBody -- none, EXPLICIT,
 /// IMPLICIT_WORLD, IMPLICIT_BODY (btRigidBody.h: IMPLICIT_BODY "enabled by default in
 /// Bullet 2.83 and onwards") -- named bullet::gyroscopic_<mode>. Bullet states no order.
