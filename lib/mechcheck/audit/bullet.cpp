@@ -88,7 +88,7 @@ class run final : public engine_run {
   run& operator=(const run&) = delete;
 
   void step(double h) override {
-    if (!(h > 0 && std::isfinite(h))) throw domain_error(name_ + ": the step must be positive, got " + to_text(h));
+    if (!(h != 0 && std::isfinite(h))) throw domain_error(name_ + ": the step must be finite and non-zero, got " + to_text(h));
     ++steps_;
     if (s_.central != 0) {  // cleared by each stepSimulation
       const Eigen::Vector3d x = vec(body_->getCenterOfMassPosition());
@@ -170,7 +170,8 @@ class multibody_run final : public engine_run {
   multibody_run& operator=(const multibody_run&) = delete;
 
   void step(double h) override {
-    if (!(h > 0 && std::isfinite(h))) throw domain_error(std::string(name) + ": the step must be positive, got " + to_text(h));
+    if (!(h != 0 && std::isfinite(h)))
+      throw domain_error(std::string(name) + ": the step must be finite and non-zero, got " + to_text(h));
     ++steps_;
     world_->stepSimulation(h, 0);
     const body_reading r = read();

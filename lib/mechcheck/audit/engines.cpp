@@ -441,6 +441,27 @@ void jacobian_of(const engine_integrator& in, const scenario& s, engine_scenario
   }
 }
 
+/// One step forward and one back from the scenario's start, against the start.
+void reversal_of(const engine_integrator& in, const scenario& s, engine_scenario_audit& a) {
+  const Eigen::VectorXd x0 = s.exact(0);
+  const auto defect = [&](double h) {
+    auto e = in.start(s);
+    e->step(h);
+    e->step(-h);
+    return (observe(s, e->read()).observables - x0).norm() / s.scale;
+  };
+  try {
+    a.reversal_defect = defect(s.h_long);
+    a.reversal_defect_half = defect(s.h_long / 2);
+  } catch (const scenario_refused&) {
+    throw;
+  } catch (const std::exception& ex) {
+    a.reversal_defect.reset();
+    a.reversal_defect_half.reset();
+    a.reversal_refused = ex.what();
+  }
+}
+
 constexpr double det_resolution_needed = 1e-6;
 
 verdict judge_symplectic(const engine_integrator& in, const std::vector<engine_scenario_audit>& all) {
@@ -494,6 +515,7 @@ engine_audit audit_engine(const engine_integrator& in, const engine_options& opt
       a.global = order_of(in, s, opt);
       run_long(in, s, opt, a);
       jacobian_of(in, s, a);
+      reversal_of(in, s, a);
     } catch (const scenario_refused& e) {
       a.refused = e.what();
     }
@@ -639,6 +661,10 @@ std::string engines_to_json(const std::vector<engine_audit>& audits, const std::
       js["long_run_steps"] = s.long_run_steps;
       js["seconds_per_step"] = s.seconds_per_step;
       if (s.det_minus_one) js["jacobian"] = {{"det_minus_one", *s.det_minus_one}, {"resolution", s.det_resolution}};
+      if (s.reversal_defect)
+        js["reversal"] = {{"defect", *s.reversal_defect}, {"defect_half_step", *s.reversal_defect_half}};
+      else if (!s.reversal_refused.empty())
+        js["reversal"] = {{"refused", s.reversal_refused}};
       for (const auto& [t, e] : s.energy_history) js["energy_history"].push_back({t, e});
       for (const auto& [t, e] : s.momentum_history) js["momentum_history"].push_back({t, e});
       if (!s.long_run_failure.empty()) js["long_run_failure"] = s.long_run_failure;
@@ -666,8 +692,8 @@ std::string engines_to_markdown(const std::vector<engine_audit>& audits, const s
   md << "# Physics engines against exact solutions\n\n";
   for (const auto& s : scenarios()) md << "- `" << s.name << "`: " << s.description << "\n";
   md << "\n| integrator | scenario | global order (spread) | energy, long run | angular momentum, long run | "
-        "det M - 1 (resolution) | us/step |\n"
-        "|---|---|---|---|---|---|---|\n";
+        "det M - 1 (resolution) | h then -h: defect at h, h/2 | us/step |\n"
+        "|---|---|---|---|---|---|---|---|\n";
   for (const auto& a : audits)
     for (const auto& s : a.scenarios)
       md << "| " << a.integrator << " | " << s.scenario << " | " << fit_text(s) << " | "
@@ -675,6 +701,9 @@ std::string engines_to_markdown(const std::vector<engine_audit>& audits, const s
          << (s.long_run_failure.empty() ? "" : " (failed at " + s.long_run_failure + ")") << " | "
          << growth(s.momentum_growth, s.momentum_max) << " | "
          << (s.det_minus_one ? sci(*s.det_minus_one) + " (" + sci(s.det_resolution) + ")" : std::string("-")) << " | "
+         << (s.reversal_defect ? sci(*s.reversal_defect) + ", " + sci(*s.reversal_defect_half)
+                               : s.reversal_refused.empty() ? std::string("-") : std::string("no negative step"))
+         << " | "
          << (s.seconds_per_step > 0 ? detail::fixed(s.seconds_per_step * 1e6) : std::string("-")) << " |\n";
   md << "\n";
   if (!shapes.empty()) {

@@ -155,6 +155,11 @@ struct engine_scenario_audit {
   /// (finite_differences.hpp) -- 1 for a symplectic map -- and its resolution.
   std::optional<double> det_minus_one;
   double det_resolution = 0;
+  /// Time symmetry where the engine takes a negative step: |x(h then -h) - x(0)| / scale
+  /// at h = h_long and h_long / 2 (a symmetric method returns to rounding; another's
+  /// defect falls like a power of h); or why a negative step was not taken.
+  std::optional<double> reversal_defect, reversal_defect_half;
+  std::string reversal_refused;
 };
 
 struct engine_audit {

@@ -113,8 +113,7 @@ class run final : public engine_run {
   run& operator=(const run&) = delete;
 
   void step(double h) override {
-    if (!(h > 0 && std::isfinite(h)))
-      throw domain_error(name_ + ": MuJoCo steps forward only; h = " + to_text(h));
+    if (!(h != 0 && std::isfinite(h))) throw domain_error(name_ + ": the step must be finite and non-zero, got " + to_text(h));
     ++steps_;
     model_->opt.timestep = h;
     last_warning.clear();

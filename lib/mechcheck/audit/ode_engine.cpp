@@ -108,7 +108,7 @@ class run final : public engine_run {
   run& operator=(const run&) = delete;
 
   void step(double h) override {
-    if (!(h > 0 && std::isfinite(h))) throw domain_error(name_ + ": the step must be positive, got " + to_text(h));
+    if (!(h != 0 && std::isfinite(h))) throw domain_error(name_ + ": the step must be finite and non-zero, got " + to_text(h));
     ++steps_;
     if (s_.central != 0) {  // ODE's force accumulator, cleared by each step
       const Eigen::Vector3d x = vec(dBodyGetPosition(body_));

@@ -77,7 +77,7 @@ class run final : public engine_run {
   }
 
   void step(double h) override {
-    if (!(h > 0 && std::isfinite(h))) throw domain_error(name_ + ": the step must be positive, got " + to_text(h));
+    if (!(h != 0 && std::isfinite(h))) throw domain_error(name_ + ": the step must be finite and non-zero, got " + to_text(h));
     ++steps_;
     try {
       model_->step(h);

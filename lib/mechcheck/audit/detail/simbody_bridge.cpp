@@ -142,6 +142,8 @@ model::~model() = default;
 
 void model::step(double h) {
   impl& m = *p_;
+  // stepTo advances to a later report time only: a negative step would return at once.
+  if (!(h > 0)) throw std::invalid_argument("Simbody's Integrator::stepTo only advances time (h = " + std::to_string(h) + ")");
   if (!m.started || h != m.h) {
     m.integrator->setFixedStepSize(h);
     m.h = h;
