@@ -40,6 +40,7 @@ class scenario_refused : public error {
 enum class scenario_kind {
   free_top,            ///< asymmetric free body, no gravity: body angular velocity
   free_top_near_axis,  ///< the same near the intermediate axis (flips)
+  boxes,               ///< gazebo-classic's benchmark box near its intermediate axis
   free_symmetric_top,  ///< symmetric free body: body angular velocity and symmetry axis
   heavy_top,           ///< symmetric top on a fixed point in steady precession
   heavy_top_nutation,  ///< the same top nutating from a turning point
