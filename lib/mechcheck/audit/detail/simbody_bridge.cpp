@@ -129,6 +129,7 @@ model::model(const setup& s) : p_(new impl) {
     m.body.setQToFitTransform(m.state, Transform(r0, Vec3(s.position0[0], s.position0[1], s.position0[2])));
     m.body.setUToFitVelocity(m.state, SpatialVec(w0, Vec3(s.velocity0[0], s.velocity0[1], s.velocity0[2])));
   }
+  m.system.realize(m.state, Stage::Velocity);
 #ifdef MECHCHECK_SIMBODY_WITH_SUNDIALS
   if (std::string(entries().at(static_cast<std::size_t>(s.integrator)).name) == "CPodes")
     throw refused(
@@ -163,8 +164,9 @@ void model::step(double h) {
 
 reading model::read() const {
   const impl& m = *p_;
-  State st = m.started ? m.integrator->getState() : m.state;
-  m.system.realize(st, Stage::Velocity);
+  // The integrator leaves its state realized through Velocity at least; the initial state
+  // is realized at construction. Copying a State each step cost more than the step.
+  const State& st = m.started ? m.integrator->getState() : m.state;
   reading r;
   const Rotation& rot = m.body.getBodyRotation(st);
   for (int i = 0; i < 3; ++i)
