@@ -276,6 +276,52 @@ TEST(engines, the_new_references_agree_with_the_library) {
   }
 }
 
+TEST(engines, observe_computes_energy_and_momentum_by_their_closed_forms) {
+  // Hand-built body states against the textbook expressions of each scenario.
+  constexpr double eps = 2.220446049250313e-16;
+  const auto all = audit::scenarios();
+  {  // hinge pendulum: E = I thetadot^2 / 2 - m g l cos theta, I about the hinge
+    const auto s = audit::with_hinge_state(named(all, "pendulum_large"), 0.7, -1.3);
+    audit::body_reading r;
+    r.rotation = s.rotation0;
+    r.position = s.position0;
+    r.velocity = s.velocity0;
+    r.omega = s.omega0;
+    const auto o = audit::observe(s, r);
+    const double l = -s.com(2), expected = audit::hinge_inertia(s) * 1.3 * 1.3 / 2 - s.mass * s.gravity * l * std::cos(0.7);
+    EXPECT_NEAR(o.energy, expected, 8 * eps * std::abs(expected));
+    EXPECT_NEAR(o.observables(0), 0.7, 4 * eps);
+    EXPECT_EQ(o.observables(1), -1.3);
+  }
+  {  // Kepler: E = m v^2 / 2 - m k / r, L = m x x v
+    const auto& s = named(all, "kepler");
+    audit::body_reading r;
+    r.position = {0.3, -0.4, 0};
+    r.velocity = {1, 2, 0};
+    const auto o = audit::observe(s, r);
+    EXPECT_NEAR(o.energy, s.mass * 5.0 / 2 - s.mass * s.central / 0.5, 8 * eps);
+    EXPECT_LT((o.momentum - s.mass * Eigen::Vector3d(0, 0, 0.3 * 2 + 0.4 * 1)).norm(), 4 * eps);
+  }
+  {  // heavy top: only the vertical angular momentum about the pivot is kept
+    const auto& s = named(all, "heavy_top");
+    audit::body_reading r;
+    r.rotation = s.rotation0;
+    r.position = s.position0;
+    r.velocity = s.velocity0;
+    r.omega = s.omega0;
+    const auto o = audit::observe(s, r);
+    const Eigen::Vector3d wb = s.rotation0.transpose() * s.omega0;
+    const Eigen::Vector3d l = s.mass * s.position0.cross(s.velocity0) + s.rotation0 * s.inertia.cwiseProduct(wb);
+    EXPECT_EQ(o.momentum(0), 0);
+    EXPECT_EQ(o.momentum(1), 0);
+    EXPECT_NEAR(o.momentum(2), l(2), 8 * eps * l.norm());
+    const double e = s.mass * s.velocity0.squaredNorm() / 2 + wb.dot(s.inertia.cwiseProduct(wb)) / 2 +
+                     s.mass * s.gravity * s.position0(2);
+    EXPECT_NEAR(o.energy, e, 8 * eps * e);
+    EXPECT_GT(s.position0(2), 0);  // the centre of mass above the pivot: the potential counts up
+  }
+}
+
 TEST(engines, the_jacobian_study_has_known_answers) {
   // Explicit Euler on the pendulum: M = [[1, h], [-h w0^2 cos theta, 1]], det - 1 =
   // h^2 w0^2 cos theta exactly; symplectic Euler: det = 1. Declared symplectic, the first
