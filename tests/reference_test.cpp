@@ -2,6 +2,7 @@
 // property and energy conservation, in every tier including the 100-digit one.
 #include <gtest/gtest.h>
 
+#include "mechcheck/integrators.hpp"
 #include "mechcheck/poisson.hpp"
 #include "mechcheck/reference.hpp"
 #include "tiers.hpp"

@@ -16,7 +16,8 @@ struct closed_orbits {
   template <class T>
   static void property() {
     const auto c = random_constants<T>();
-    const auto [r1, r2] = random_apsides<T>();
+    const auto apsides = random_apsides<T>();  // not a structured binding: the lambdas capture r1
+    const T r1 = std::get<0>(apsides), r2 = std::get<1>(apsides);
     const mc::radial_orbit<T> orbit(c.mu, T(-c.k), T(-1), r1, r2);
     const T two_pi = 2 * pi<T>();
     check_close("Delta phi (eq 107) vs 2 pi", orbit.apsidal_angle(), two_pi, two_pi, 64);

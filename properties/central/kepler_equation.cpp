@@ -32,15 +32,16 @@ struct kepler_equation {
     check_zero("e sinh H - H - M", T(hres), T(abs(m) + mc::tier_epsilon<T>() * 8), 8);
     // The analytic orbit against integration over t in [0, 1].
     const auto c = random_constants<T>();
-    const auto [r1, r2] = random_apsides<T>();
+    const auto apsides = random_apsides<T>();  // not a structured binding: the lambda captures r1
+    const T r1 = std::get<0>(apsides), r2 = std::get<1>(apsides);
     const auto [q0, v0] = pericentre_state(c, r1, T((r2 - r1) / (r2 + r1)));
     const mc::kepler_orbit<T> analytic(c, q0, v0);
     const T t_end = T(*gen::dyadic(0.25, 1));
-    const auto [q1, v1] = analytic.state_at(t_end);
+    const dynamic_vector<T> q1(analytic.state_at(t_end).first);  // captured below
     const dynamic_vector<T> x0(q0), p0(dynamic_vector<T>(c.mu * v0));
     const auto error = [&](const T& h) {
       const auto s = kepler_flow(c, x0, p0, t_end, steps_for(h));
-      return T((s.q - dynamic_vector<T>(q1)).norm() / r1);
+      return T((s.q - q1).norm() / r1);
     };
     check_exponent("integrated vs analytic position: fitted order",
                    converged_exponent(error, T(1) / 32, 8, lift<T>(1)), 8);

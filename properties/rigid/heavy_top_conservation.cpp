@@ -16,7 +16,9 @@ struct heavy_top_conservation {
   template <class T>
   static void property() {
     const auto top = random_heavy_top<T>();
-    const auto [q, v] = random_top_state<T>();
+    const auto state = random_top_state<T>();  // not a structured binding: the lambdas capture q, v
+    const dynamic_vector<T>& q = state[0];
+    const dynamic_vector<T>& v = state[1];
     const T t = lift<T>(0);
     const dynamic_vector<T> a = mc::accelerations(top, q, v, t);
     const T scale = top_scale(top, v) * (v.norm() + 1) * (a.norm() + 1);
