@@ -84,7 +84,7 @@ struct curved_solids {
       check_close("solid cone I_zz", T(m / c.volume * c.izz), ref(2, 2), T(m * (r * r + h * h)), 64);
       check_close("solid cone I_xx", T(m / c.volume * c.ixx), ref(0, 0), T(m * (r * r + h * h)), 64);
     }
-    {  // ellipsoid with semi-axes (r, h, m) along (x, y, z) -- the draws reused
+    {  // ellipsoid with semi-axes (r, h, cz) along (x, y, z): two draws reused, one new
       moments c;
       const T a = r, b = h, cz = T(*gen::positive());
       const auto sx = round([&](const T& z) { return T(a * a * (1 - z * z / (cz * cz))); });
