@@ -3,8 +3,11 @@
 ///
 /// Every module is templated on `Scalar`; these are the scalars the project runs in:
 ///   - `double`                      IEEE binary64, 15 decimal digits;
-///   - `mechcheck::float128`         IEEE binary128 (libquadmath), 33 decimal digits:
-///                                   the ~32-digit tier, chosen by measurement (README);
+///   - `mechcheck::float128`         IEEE binary128, 33 decimal digits: the ~32-digit
+///                                   tier, chosen by measurement (docs/performance.md);
+///                                   libquadmath's __float128 where the toolchain has it,
+///                                   else (MECHCHECK_FLOAT128_SOFTWARE, set by the build)
+///                                   Boost's cpp_bin_float_quad, the same format in C++;
 ///   - `mechcheck::mpfr50`           MPFR, 50 decimal digits, expression templates off;
 ///   - `mechcheck::mpfr100`          MPFR, 100 decimal digits, for references only.
 ///
@@ -15,7 +18,11 @@
 #include <string_view>
 #include <tuple>
 
+#ifdef MECHCHECK_FLOAT128_SOFTWARE
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#else
 #include <boost/multiprecision/float128.hpp>
+#endif
 #include <boost/multiprecision/mpfr.hpp>
 // NumTraits for every boost::multiprecision::number (needs Boost >= 1.81 with Eigen 3.4).
 #include <boost/multiprecision/eigen.hpp>
@@ -24,7 +31,11 @@
 
 namespace mechcheck {
 
+#ifdef MECHCHECK_FLOAT128_SOFTWARE
+using float128 = boost::multiprecision::cpp_bin_float_quad;
+#else
 using float128 = boost::multiprecision::float128;
+#endif
 using mpfr50 = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<50>,
                                              boost::multiprecision::et_off>;
 using mpfr100 = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<100>,
