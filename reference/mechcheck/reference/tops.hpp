@@ -127,9 +127,9 @@ vector3<T> asymmetric_top_angular_velocity(const vector3<T>& moments, const vect
   if (top != 0) tau0 = boost::math::ellint_1(k, T(atan2(w(1) / b, w(0) / a)));
   T cn, dn_boost;
   const T sn = boost::math::jacobi_elliptic(k, T(tau0 + lambda * t), &cn, &dn_boost);
-  // dn from sn: Boost.Math's dn is wrong near the quarter period (measured in 1.83:
-  // dn(K(1/2), 1/2) off by 2e-3 in double); 1 - k^2 sn^2 >= 1 - k^2 > 0 is well
-  // conditioned.
+  // dn from sn: Boost.Math's dn is wrong near the quarter period (Boost 1.81: dn at
+  // u = K for k^2 = 1/2 is 0.706466 in double, off by 6.4e-4 from sqrt(1/2));
+  // 1 - k^2 sn^2 >= 1 - k^2 > 0 is well conditioned.
   const T dn = sqrt(T(1 - k2 * sn * sn));
   vector3<T> out(a * cn, b * sn, c * dn);
   if (turned) out = vector3<T>(out(0), -out(1), -out(2));
