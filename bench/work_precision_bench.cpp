@@ -14,7 +14,7 @@
 /// error extrapolated along the fitted C N^-4, see seconds_at), and writes
 /// work-precision-kepler-e0.5.json, work-precision-kepler-e0.5.svg (double) and
 /// work-precision-kepler-e0.5-mpfr50.svg (error against wall time) into the directory
-/// given by --out DIR (default: the current one); --out docs/bench rewrites the README's.
+/// given by --out DIR (default: the current one); --out docs/bench rewrites the files docs/performance.md shows.
 /// Run: build/bench/mechcheck_bench_work_precision --out build/report/bench
 /// (--benchmark_filter='^double/' or '^mpfr50/' runs one tier.)
 
