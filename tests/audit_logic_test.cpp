@@ -530,9 +530,16 @@ struct order_row {
   std::vector<audit::problem_audit> problems;
   outcome expected;
   const char* measured;
+  std::vector<audit::order_reading> readings = {};
 };
 
 using fit = std::tuple<double, double, int>;
+
+/// A problem whose global fit ended at the rounding floor after its halvings.
+audit::problem_audit at_floor(audit::problem_audit p) {
+  p.global.fit.floor_h = 1e-3;
+  return p;
+}
 
 class verdict_table : public ::testing::TestWithParam<order_row> {};
 
@@ -540,10 +547,14 @@ TEST_P(verdict_table, order) {
   const order_row& row = GetParam();
   audit::claims c;
   c.order = row.declared;
-  const auto v = audit::detail::judge(c, row.problems);
+  c.order_readings = row.readings;
+  const auto v = audit::judge(c, row.problems, 0x1p-52);
   ASSERT_EQ(v.front().claim, "order");
   EXPECT_EQ(v.front().result, row.expected) << v.front().evidence;
   EXPECT_EQ(v.front().measured, row.measured) << v.front().evidence;
+  // Every verdict the study cannot decide says what it would need; a reading keeps both.
+  if (row.expected == outcome::not_resolvable) EXPECT_FALSE(v.front().needs.empty());
+  if (row.expected == outcome::reading) EXPECT_EQ(v.front().readings.size(), 2u);
 }
 
 const order_row order_rows[] = {
@@ -553,24 +564,39 @@ const order_row order_rows[] = {
     {"global_below", 4, {problem_with(fit{3.74, 0.01, 3}, fit{5.0, 0.01, 3})}, outcome::contradicted, "3.74"},
     {"local_below", 4, {problem_with(fit{4.0, 0.01, 3}, fit{4.74, 0.01, 3})}, outcome::contradicted, "4.00"},
     {"local_just_above_band", 4, {problem_with(fit{4.0, 0.01, 3}, fit{4.76, 0.01, 3})}, outcome::confirmed, "4.00"},
-    // Unsettled fits (spread > 0.3 or a single halving) are reported, not judged.
-    {"unsettled_global_below", 4, {problem_with(fit{2.0, 0.31, 3}, fit{5.0, 0.01, 3})}, outcome::not_measured, "-"},
-    {"single_halving", 4, {problem_with(fit{2.0, 0.0, 1}, fit{5.0, 0.01, 3})}, outcome::not_measured, "-"},
-    {"settled_at_spread_0_3", 4, {problem_with(fit{2.0, 0.3, 2}, std::nullopt)}, outcome::contradicted, "2.00"},
+    // Only a decisive fit (three exponents within 0.1) contradicts; a settled one (two or
+    // three within 0.3) confirms; an unsettled one neither: the study cannot resolve.
+    {"unsettled_global_below", 4, {problem_with(fit{2.0, 0.31, 3}, fit{5.0, 0.01, 3})}, outcome::not_resolvable, "-"},
+    {"single_halving", 4, {problem_with(fit{2.0, 0.0, 1}, fit{5.0, 0.01, 3})}, outcome::not_resolvable, "-"},
+    {"two_halvings_below", 4, {problem_with(fit{2.0, 0.0, 2}, std::nullopt)}, outcome::not_resolvable, "2.00"},
+    {"decisive_at_spread_0_1", 4, {problem_with(fit{2.0, 0.1, 3}, std::nullopt)}, outcome::contradicted, "2.00"},
+    {"not_decisive_at_spread_0_11", 4, {problem_with(fit{2.0, 0.11, 3}, std::nullopt)}, outcome::not_resolvable, "2.00"},
+    // A tenth-order method that reaches double's floor after two halvings (Gauss 5).
+    {"floor_after_two_halvings", 10, {at_floor(problem_with(fit{9.44, 0.06, 2}, fit{8.63, 0.35, 2}))}, outcome::not_resolvable, "9.44"},
+    // A local fit still rising towards p + 1 beside a clean global order confirms (a
+    // third-order table: global 3.00, local 3.67 with spread 0.18); a decisive one below
+    // contradicts (coefficients right to double only, seen in mpfr50: local 3.00).
+    {"unsettled_local_below_clean_global", 3, {problem_with(fit{3.0, 0.005, 3}, fit{3.67, 0.18, 3})}, outcome::confirmed, "3.00"},
+    {"decisive_local_below_clean_global", 4, {problem_with(fit{4.0, 0.0, 3}, fit{3.0, 0.0, 3})}, outcome::contradicted, "4.00"},
     // Worst case over problems: one problem below contradicts.
     {"worst_problem", 4, {problem_with(fit{4.0, 0.0, 3}, fit{5.0, 0, 3}), problem_with(fit{3.0, 0.0, 3}, fit{4.0, 0, 3})}, outcome::contradicted, "3.00"},
     // Higher than declared: every settled global above p + 0.75 and local above p + 1.75.
-    {"above_declared", 1, {problem_with(fit{2.0, 0.0, 3}, fit{3.0, 0, 3})}, outcome::contradicted, "2.00"},
+    {"above_declared", 1, {problem_with(fit{2.0, 0.0, 3}, fit{3.0, 0, 3})}, outcome::exceeds, "2.00"},
     {"above_globally_only", 1, {problem_with(fit{2.0, 0.0, 3}, fit{2.7, 0, 3})}, outcome::confirmed, "2.00"},
     {"above_on_one_problem", 1, {problem_with(fit{2.0, 0.0, 3}, fit{3.0, 0, 3}), problem_with(fit{1.0, 0.0, 3}, fit{2.0, 0, 3})}, outcome::confirmed, "1.00"},
     {"above_without_local", 1, {problem_with(fit{2.0, 0.0, 3}, std::nullopt)}, outcome::confirmed, "2.00"},
     // A stall contradicts whatever the fits say (the fits end before it).
     {"stall", 3, {problem_with(fit{3.0, 0.0, 3}, fit{4.0, 0, 3}, true)}, outcome::contradicted, "stalls"},
     {"stall_without_fit", 3, {problem_with(std::nullopt, std::nullopt, true)}, outcome::contradicted, "stalls"},
+    // Readings: "third order" read as the local error (global 2, local 3) holds; read as
+    // the global order it does not. Neither reading holds for a first-order method.
+    {"local_error_reading", 3, {problem_with(fit{2.0, 0.0, 3}, fit{3.0, 0.0, 3})}, outcome::reading, "2.00", {audit::order_reading::local_error}},
+    {"local_error_reading_fails", 3, {problem_with(fit{1.0, 0.0, 3}, fit{2.0, 0.0, 3})}, outcome::contradicted, "1.00", {audit::order_reading::local_error}},
+    {"global_holds_before_readings", 2, {problem_with(fit{2.0, 0.0, 3}, fit{3.0, 0.0, 3})}, outcome::confirmed, "2.00", {audit::order_reading::local_error}},
     // Nothing declared, nothing resolvable.
     {"not_declared", std::nullopt, {problem_with(fit{4.0, 0.0, 3}, fit{5.0, 0, 3})}, outcome::not_declared, "4.00"},
     {"nothing_resolved", 4, {problem_with(std::nullopt, std::nullopt)}, outcome::not_measured, "-"},
-    {"only_local", 4, {problem_with(std::nullopt, fit{5.0, 0.0, 3})}, outcome::not_measured, "-"},
+    {"only_local", 4, {problem_with(std::nullopt, fit{5.0, 0.0, 3})}, outcome::not_resolvable, "-"},
     {"only_local_below", 4, {problem_with(std::nullopt, fit{4.0, 0.0, 3})}, outcome::contradicted, "-"},
 };
 
@@ -585,6 +611,7 @@ struct property_row {
   std::optional<bool> declared;
   std::vector<std::optional<bool>> within;  // per problem: the defect within its budget
   outcome expected;
+  double resolution = 0;  // > 0: the Jacobian by finite differences, with this resolution
 };
 
 class property_table : public ::testing::TestWithParam<property_row> {};
@@ -598,6 +625,7 @@ TEST_P(property_table, symplectic_and_symmetric) {
     if (w) {
       audit::defect_study d;
       d.within_rounding = *w;
+      d.resolution = row.resolution;
       p.symplectic = d;
       p.symmetric = d;
     }
@@ -606,7 +634,7 @@ TEST_P(property_table, symplectic_and_symmetric) {
   audit::claims c;
   c.symplectic = row.declared;
   c.symmetric = row.declared;
-  const auto v = audit::detail::judge(c, ps);
+  const auto v = audit::judge(c, ps, 0x1p-52);
   EXPECT_EQ(v[1].claim, "symplectic");
   EXPECT_EQ(v[2].claim, "symmetric");
   EXPECT_EQ(v[1].result, row.expected) << v[1].evidence;
@@ -617,7 +645,11 @@ const property_row property_rows[] = {
     {"claimed_and_within", true, {true, true}, outcome::confirmed},
     {"claimed_and_one_over", true, {true, false}, outcome::contradicted},
     {"denied_and_over", false, {false, true}, outcome::confirmed},
-    {"denied_but_within_everywhere", false, {true, true}, outcome::contradicted},
+    // Declared not symplectic, none found: by AD (a rounding budget) the method is more
+    // than declared; by finite differences the defect may lie below their resolution.
+    {"denied_but_within_everywhere", false, {true, true}, outcome::exceeds},
+    {"denied_within_by_finite_differences", false, {true, true}, outcome::not_resolvable, 1e-8},
+    {"claimed_and_over_by_finite_differences", true, {false}, outcome::contradicted, 1e-8},
     {"not_declared", std::nullopt, {true}, outcome::not_declared},
     {"not_measured", true, {std::nullopt, std::nullopt}, outcome::not_measured},
     {"measured_on_one", true, {std::nullopt, true}, outcome::confirmed},

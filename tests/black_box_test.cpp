@@ -84,6 +84,42 @@ TEST(black_box, rk4_and_explicit_euler_are_not_symplectic) {
   EXPECT_GT(std::abs(*pendulum.symplectic->area_defect), 100 * *pendulum.symplectic->area_resolution);
 }
 
+TEST(black_box, a_symplectic_euler_black_box_runs_only_where_it_applies_and_its_claims_hold) {
+  // The default audit's problems (all six) and a long run on Kepler e = 0.5. The box takes
+  // its velocity and force from the right-hand side's q and p parts: it declares that it
+  // needs a canonical, separable problem, and the twist (non-separable) and the free top
+  // (not canonical) are skipped with the reason.
+  audit::audit_options opt;
+  opt.long_run_problems = {"kepler_e0.5"};
+  opt.long_run_steps = 20000;
+  opt.timing = false;
+  const audit::black_box box = audit::library_stepper_as_black_box<symplectic_euler>("symplectic Euler");
+  ASSERT_TRUE(box.structure.canonical && box.structure.separable);
+  const auto a = audit::audit_stepper(audit::black_box_stepper(box), opt);
+  EXPECT_TRUE(a.claims_hold());
+  for (const auto& v : a.verdicts)
+    if (v.result != outcome::not_declared)
+      EXPECT_EQ(v.result, outcome::confirmed) << v.claim << ": " << v.evidence;
+  int skipped = 0;
+  for (const auto& p : a.problems)
+    if (!p.skipped.empty()) {
+      ++skipped;
+      EXPECT_TRUE(p.problem == "twist" || p.problem == "free_top") << p.problem;
+      EXPECT_NE(p.skipped.find("(declared)"), std::string::npos) << p.skipped;
+    }
+  EXPECT_EQ(skipped, 2);
+  // The wrong variant: the same box without its structure is run on the twist, where the
+  // right-hand side's parts are not velocity and force, and its order is contradicted.
+  audit::black_box undeclared = box;
+  undeclared.structure = {};
+  audit::audit_options twist = opt;
+  twist.problems = {"twist"};
+  twist.long_run_problems = {};
+  twist.long_run_steps = 0;
+  const auto b = audit::audit_stepper(audit::black_box_stepper(undeclared), twist);
+  EXPECT_FALSE(b.claims_hold());
+}
+
 TEST(black_box, a_black_box_keeps_the_verdicts_of_its_method_run_directly) {
   const auto direct = audit::audit_stepper(audit::method<rk4, double>("rk4"), quick());
   const auto boxed = black_box_audit<rk4>("rk4 (black box)");

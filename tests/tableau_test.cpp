@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <iterator>
+#include <regex>
+
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -18,6 +21,7 @@
 namespace tableau_test {
 using namespace mechcheck;
 namespace audit = mechcheck::audit;
+using outcome = audit::verdict::outcome;
 namespace fs = std::filesystem;
 
 const fs::path dir = MECHCHECK_TABLEAU_DIR;
@@ -224,10 +228,12 @@ TEST(tableau_file, malformed_files_are_typed_errors_naming_the_entry_and_the_val
       {R"({"A": [["0","0"],["1","0"]], "b": ["1/2", 0.5], "c": ["0","1"]})", {"b[1]", "0.5", "through double"}},
       {R"({"A": [["0","0"],["1","0"]], "b": ["1/0","1/2"], "c": ["0","1"]})", {"b[0]", "1/0", "divides by zero"}},
       {R"({"A": [["0","0"],["1","0"]], "b": ["1/2",null], "c": ["0","1"]})", {"b[1]", "null"}},
-      {R"({"A": [["1","1"],["1","1"]], "b": ["1/2","1/2"], "c": ["1","1"]})", {"singular", "rows 0, 1"}},
       {R"({"A": [["0","0"],["1","0"]], "b": ["1/2","1/2"], "c": ["0","1"], "order": 0})", {"order = 0"}},
       {R"([1, 2])", {"not a JSON object"}},
       {R"({"A": )", {"not JSON"}},
+      {R"({"A": [["0","0"],["1","0"]], "b": ["1/2","1/2"], "c": ["0","1"], "precision": "double"})", {"precision", "\"double\""}},
+      {R"({"A": [["0","0"],["1","0"]], "b": ["1/2","1/2"], "c": ["0","1"], "stage_order": -1})", {"stage_order = -1"}},
+      {"{\"A\": [[\"" + std::string(1001, '1') + "\"]], \"b\": [\"1\"], \"c\": [\"0\"]}", {"A[0][0]", "1001 characters"}},
   };
   for (const auto& [text, words] : cases) {
     const std::string what = error_of(text);
@@ -235,6 +241,95 @@ TEST(tableau_file, malformed_files_are_typed_errors_naming_the_entry_and_the_val
     for (const auto& w : words) EXPECT_NE(what.find(w), std::string::npos) << text << "\n -> " << what;
   }
   EXPECT_THROW(audit::read_tableau(dir / "no_such_tableau.json"), audit::tableau_error);
+}
+
+/// gauss3.json with every decimal cut to `digits` significant digits.
+std::string gauss3_to(int digits) {
+  std::ifstream in(dir / "gauss3.json");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::regex long_decimal(R"re("(-?)0\.(0*)([0-9]{5,})")re");
+  std::string out;
+  auto begin = std::sregex_iterator(text.begin(), text.end(), long_decimal);
+  std::size_t last = 0;
+  for (auto it = begin; it != std::sregex_iterator(); ++it) {
+    const std::smatch& m = *it;
+    out += text.substr(last, std::size_t(m.position(0)) - last);
+    out += "\"" + m[1].str() + "0." + m[2].str() + m[3].str().substr(0, std::size_t(digits)) + "\"";
+    last = std::size_t(m.position(0) + m.length(0));
+  }
+  return out + text.substr(last);
+}
+
+TEST(tableau_file, a_collocation_tableau_given_to_60_digits_holds_its_claims_to_60_digits) {
+  const fs::path file = fs::temp_directory_path() / "mechcheck_gauss3_60.json";
+  std::ofstream(file) << gauss3_to(60);
+  const auto t = audit::read_tableau(file);
+  EXPECT_EQ(t.digits, 60);
+  const auto a = audit::analyse(t);
+  // Stage order s = 3 at the precision given (not exactly: the cut digits), order 6,
+  // symplectic and symmetric, all "to the precision given", none contradicted.
+  EXPECT_EQ(a.method.stage_order, 3) << audit::describe(a);
+  EXPECT_LT(a.method.stage_order_exact, 3);
+  EXPECT_EQ(a.find("order")->result, outcome::to_precision_given) << audit::describe(a);
+  EXPECT_EQ(a.find("symplectic")->result, outcome::to_precision_given) << audit::describe(a);
+  EXPECT_EQ(a.find("symmetric")->result, outcome::to_precision_given) << audit::describe(a);
+  EXPECT_NE(audit::describe(a).find("60 significant digits"), std::string::npos);
+  // Declared exact, the same digits contradict: the tolerance follows the precision.
+  std::string exact = gauss3_to(60);
+  exact.insert(exact.find('{') + 1, "\"precision\": \"exact\", ");
+  std::ofstream(file) << exact;
+  const auto e = audit::analyse(audit::read_tableau(file));
+  EXPECT_EQ(e.find("order")->result, outcome::contradicted) << audit::describe(e);
+  // The 100-digit file itself holds exactly.
+  const auto full = audit::analyse(audit::read_tableau(dir / "gauss3.json"));
+  EXPECT_EQ(full.find("order")->result, outcome::confirmed) << audit::describe(full);
+  EXPECT_EQ(full.method.stage_order_exact, 3);
+}
+
+TEST(tableau_file, claims_a_file_may_declare_are_judged_algebraically) {
+  const fs::path file = fs::temp_directory_path() / "mechcheck_claims.json";
+  const auto analysis = [&](const std::string& extra) {
+    // gauss2.json (its sqrt(3) in 100-digit decimals) with `extra` declared.
+    std::ifstream in(dir / "gauss2.json");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    text.insert(text.find('{') + 1, extra);
+    std::ofstream(file) << text;
+    return audit::analyse(audit::read_tableau(file));
+  };
+  EXPECT_EQ(analysis(R"("stage_order": 2, )").find("stage order")->result, outcome::confirmed);
+  EXPECT_EQ(analysis(R"("stage_order": 3, )").find("stage order")->result, outcome::contradicted);
+  EXPECT_EQ(analysis(R"("stage_order": 1, )").find("stage order")->result, outcome::exceeds);
+  // gauss2.json declares symplectic and symmetric: confirmed exactly.
+  const auto a = analysis("");
+  EXPECT_EQ(a.find("symplectic")->result, outcome::confirmed);
+  EXPECT_EQ(a.find("symmetric")->result, outcome::confirmed);
+  // RK4 declared symplectic is contradicted by its condition.
+  std::ifstream in(dir / "rk4.json");
+  std::string rk4((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  rk4.replace(rk4.find("\"symplectic\": false"), 19, "\"symplectic\": true");
+  rk4.insert(rk4.find('{') + 1, R"("stage_order": 1, )");
+  std::ofstream(file) << rk4;
+  const auto r = audit::analyse(audit::read_tableau(file));
+  EXPECT_EQ(r.find("symplectic")->result, outcome::contradicted);
+  EXPECT_EQ(r.find("stage order")->result, outcome::confirmed);
+}
+
+TEST(tableau_file, a_singular_implicit_block_is_accepted_and_its_stepper_runs) {
+  // A = [[1, 1], [1, 1]]: both stages solve K = f(y + 2 h K), a contraction for small h;
+  // the method is y + h K, K = f(y + 2 h K), of order 1.
+  const fs::path file = fs::temp_directory_path() / "mechcheck_singular.json";
+  std::ofstream(file) << R"({"name": "singular", "A": [["1","1"],["1","1"]], "b": ["1/2","1/2"], "c": ["2","2"], "order": 1})";
+  const auto t = audit::read_tableau(file);
+  const auto a = audit::analyse(t);
+  EXPECT_EQ(a.find("order")->result, outcome::confirmed) << audit::describe(a);
+  audit::audit_options opt;
+  opt.problems = {"oscillator"};
+  opt.long_run_steps = 0;
+  opt.timing = false;
+  audit::claims c;
+  c.order = 1;
+  const auto report = audit::audit_stepper(audit::tableau_stepper<double>("singular", t.tableau, c, t.path), opt);
+  EXPECT_EQ(report.find("order")->result, outcome::confirmed) << report.find("order")->evidence;
 }
 
 TEST(tableau_file, coefficients_are_read_without_double) {

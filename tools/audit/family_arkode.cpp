@@ -4,10 +4,19 @@
 #include "mechcheck/audit/arkode.hpp"
 #include "mechcheck/audit/black_box.hpp"
 #include "mechcheck/audit/tableau.hpp"
+#include "mechcheck/audit/tableau_file.hpp"
 #include "run_family.hpp"
 
 namespace mechcheck::audit_tool {
 namespace {
+/// ARKODE's tables are double (realtype): their claims hold to double's rounding, 2^-53
+/// relative, and their order conditions say to what order they hold at that precision.
+template <class R>
+void add_stored_precision(audit::claims& c, const butcher_tableau<R>& tab) {
+  audit::add_algebraic_claims(c, audit::order_conditions(tab.template as<mpfr100>(), 10, 0x1p-53),
+                              "stored in double by ARKODE (realtype), 2^-53 relative");
+}
+
 template <class T>
 std::vector<audit::stepper_under_audit<T>> tableau_steppers() {
   std::vector<audit::stepper_under_audit<T>> out;
@@ -17,6 +26,7 @@ std::vector<audit::stepper_under_audit<T>> tableau_steppers() {
       butcher_tableau<double> tab{t.a, embedding ? t.d : t.b, t.c};
       audit::claims c;
       c.order = embedding ? t.p : t.q;
+      add_stored_precision(c, tab);
       out.push_back(audit::tableau_stepper<T>(
           "arkode::" + t.name + (embedding ? "/embedding" : "") + "/tableau", tab, c,
           "SUNDIALS " + audit::arkode::version() + " table " + t.name +
@@ -31,8 +41,15 @@ family_result arkode_double(const request& r) {
   std::vector<audit::stepper_under_audit<double>> steppers;
   const double tolerance =
       r.newton_tolerance > 0 ? r.newton_tolerance : audit::arkode::default_newton_tolerance;
-  for (const auto& box : audit::arkode::steppers(audit::arkode::tables(), tolerance))
+  const auto tables = audit::arkode::tables();
+  for (auto box : audit::arkode::steppers(tables, tolerance)) {
+    // The same table's order conditions, for an order measured above the declared one.
+    for (const auto& t : tables)
+      for (const bool embedding : {false, true})
+        if (box.name == "arkode::" + t.name + (embedding ? "/embedding" : "") && (!embedding || !t.d.empty()))
+          add_stored_precision(box.declared, butcher_tableau<double>{t.a, embedding ? t.d : t.b, t.c});
     steppers.push_back(audit::black_box_stepper(box));
+  }
   for (auto& s : tableau_steppers<double>()) steppers.push_back(std::move(s));
   return run_family(steppers, r);
 }

@@ -21,6 +21,8 @@ std::vector<audit::stepper_under_audit<T>> steppers_of(const std::vector<audit::
         c.symplectic = f.symplectic;
         c.symmetric = f.symmetric;
       }
+      // What its order conditions say at the precision its coefficients are given to.
+      audit::add_algebraic_claims(c, audit::order_conditions(t, 10, f.precision), f.precision_words);
       out.push_back(audit::tableau_stepper<T>(
           "tableau::" + f.name + (embedding ? "/embedding" : ""), t, c,
           f.path + (f.source.empty() ? "" : " (" + f.source + ")") +

@@ -15,16 +15,29 @@ inline bool matches(const std::vector<std::string>& patterns, const std::string&
   return false;
 }
 
+/// A companion "<name>/embedding" (the embedded formula of a pair) is audited with its
+/// stepper, whose embedded reading of the declared order it measures
+/// (audit::apply_embedded_reading).
+inline bool selected(const std::vector<std::string>& patterns, const std::string& name) {
+  const std::string suffix = "/embedding";
+  if (matches(patterns, name)) return true;
+  return name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0 &&
+         matches(patterns, name.substr(0, name.size() - suffix.size()));
+}
+
 template <class T>
 family_result run_family(const std::vector<audit::stepper_under_audit<T>>& steppers,
                          const request& r) {
   family_result out;
   const auto problems = audit::reference_problems<T>();
   for (const auto& s : steppers) {
-    if (!matches(r.patterns, s.name)) continue;
+    if (!selected(r.patterns, s.name)) continue;
     out.names.push_back(s.name);
     if (!r.list_only) out.audits.push_back(audit::audit_stepper(s, problems, r.options));
   }
+  for (auto& a : out.audits)
+    for (const auto& c : out.audits)
+      if (c.stepper == a.stepper + "/embedding" && c.tier == a.tier) audit::apply_embedded_reading(a, c);
   return out;
 }
 

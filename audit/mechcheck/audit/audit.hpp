@@ -46,6 +46,7 @@
 #include "mechcheck/audit/result.hpp"
 #include "mechcheck/audit/studies.hpp"
 #include "mechcheck/audit/symplectic.hpp"
+#include "mechcheck/audit/verdicts.hpp"
 #include "mechcheck/core.hpp"
 
 namespace mechcheck::audit {
@@ -66,6 +67,9 @@ struct stepper_under_audit {
   /// Without make_ad: take the step's Jacobian by finite differences (black boxes,
   /// finite_differences.hpp), with the resolution their error model gives.
   bool finite_differences = false;
+  /// What the method needs of a problem (a canonical split, a separable H): the problems
+  /// that do not fit are skipped with the reason, never judged.
+  method_structure structure;
 };
 
 namespace detail {
@@ -75,7 +79,18 @@ claims claims_of() {
   if constexpr (requires { M::order; }) c.order = static_cast<int>(M::order);
   if constexpr (requires { M::symplectic; }) c.symplectic = static_cast<bool>(M::symplectic);
   if constexpr (requires { M::symmetric; }) c.symmetric = static_cast<bool>(M::symmetric);
+  if constexpr (requires { M::bounded_energy; })
+    c.energy = M::bounded_energy ? energy_behaviour::bounded : energy_behaviour::drift;
   return c;
+}
+
+/// A method with a static member `separable` (true) evaluates velocity and force apart:
+/// it needs a canonical, separable problem.
+template <class M>
+method_structure structure_of() {
+  method_structure s;
+  if constexpr (requires { M::separable; }) s.canonical = s.separable = static_cast<bool>(M::separable);
+  return s;
 }
 
 template <template <class, class> class Method, class S, class T>
@@ -87,13 +102,15 @@ step_function<S> make_step(const erased_system<T>& system) {
 }  // namespace detail
 
 /// A stepper of the library's form Method<System, Vec> (constructed as Method{system}),
-/// its claims read from the static members order, symplectic and symmetric.
+/// its claims read from the static members order, symplectic, symmetric and bounded_energy
+/// (true: bounded, false: drift), its structure from `separable`.
 template <template <class, class> class Method, class T>
 stepper_under_audit<T> method(std::string name) {
   stepper_under_audit<T> s;
   s.name = std::move(name);
   s.origin = "mechcheck: static members order, symplectic, symmetric";
   s.declared = detail::claims_of<Method<erased_system<T>, dynamic_vector<T>>>();
+  s.structure = detail::structure_of<Method<erased_system<T>, dynamic_vector<T>>>();
   s.make = [](const erased_system<T>& sys) { return detail::make_step<Method, T>(sys); };
   s.make_ad = [](const erased_system<T>& sys) { return detail::make_step<Method, ad<T>>(sys); };
   return s;
@@ -119,14 +136,6 @@ T distance(const state<T>& a, const state<T>& b) {
 template <class T>
 double eps_of() {
   return static_cast<double>(tier_epsilon<T>());
-}
-
-/// The points of a study inside the convergent regime (error below 10^-1 of the scale).
-inline std::vector<study_point> convergent_points(const std::vector<study_point>& points) {
-  std::vector<study_point> out;
-  for (const auto& p : points)
-    if (p.error < 0.1) out.push_back(p);
-  return out;
 }
 
 /// Global order: the halving study (studies.hpp) of runs over [0, t_end] from steps0 / 4
@@ -173,7 +182,6 @@ order_study local_order(const stepper_under_audit<T>& s, const problem<T>& pr,
                         const audit_options& opt) {
   order_study study;
   const double eps = eps_of<T>();
-  double resolvable = 0;
   T h = 8 * pr.h_local;  // high orders reach the floor within a few halvings of h_local
   for (int k = 0; k <= opt.max_local_halvings; ++k, h /= 2) {
     pr.system.reset_evaluations();
@@ -187,11 +195,9 @@ order_study local_order(const stepper_under_audit<T>& s, const problem<T>& pr,
     const double evals = static_cast<double>(pr.system.evaluations());
     const double error = to_double(T(distance(x, pr.exact(h)) / pr.scale));
     study.points.push_back({to_double(h), error, evals});
-    const double floor = 16 * eps * std::max(evals, 1.0);
-    resolvable = std::max(resolvable, 16 * floor);
-    if (error < floor) break;
+    if (error < local_floor(eps, evals)) break;
   }
-  study.fit = fit_halvings(convergent_points(study.points), resolvable);
+  fit_local(study, eps);
   return study;
 }
 
@@ -397,136 +403,6 @@ long_run run_long(const stepper_under_audit<T>& s, const problem<T>& pr,
   return run;
 }
 
-inline std::string fixed(double x, int digits = 2) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
-  return buf;
-}
-inline std::string sci(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.2e", x);
-  return buf;
-}
-
-/// A fit that decides a claim: at least two halvings, agreeing within 0.3. In double, a
-/// method of order 6 or 8 can reach the rounding floor before its exponents settle;
-/// such a fit is reported, not judged.
-inline bool settled(const fitted_exponent& f) { return f.used >= 2 && f.spread <= 0.3; }
-
-/// Claims against measurements. The order of a method is its worst case over problems
-/// (a problem can show more: symplectic Euler is of order 2 on the oscillator, and a
-/// fit in double can end before the asymptotic range); the measured order is the least
-/// settled global fit. The declared order p is contradicted when a settled global fit
-/// is below p - 0.25 or a settled local fit below p + 1 - 0.25 (the method is worse than
-/// declared), or when the least settled global fit is above p + 0.75 and every settled
-/// local fit above p + 1.75 (the method is of higher order than declared), or when a
-/// global study stalled above its rounding floor (the method converges to a wrong limit).
-/// Symplectic and symmetric: the defect within its rounding budget on every problem
-/// measured (claimed true), or above it on one at least (claimed false).
-inline std::vector<verdict> judge(const claims& declared, const std::vector<problem_audit>& ps) {
-  std::vector<verdict> out;
-  using outcome = verdict::outcome;
-  {
-    verdict v;
-    v.claim = "order";
-    v.declared = declared.order ? std::to_string(*declared.order) : "-";
-    std::vector<double> global, local;
-    bool below = false, stalled = false;
-    std::string evidence;
-    const auto describe = [](const char* what, const fitted_exponent& f) {
-      return std::string(what) + " " + fixed(f.value) + " (spread " + fixed(f.spread) + ", " +
-             std::to_string(f.used) + " halvings" + (settled(f) ? ")" : ", not settled)");
-    };
-    const double p = declared.order ? *declared.order : 0;
-    for (const auto& pa : ps) {
-      if (!pa.skipped.empty()) continue;
-      evidence += pa.problem + ": ";
-      if (pa.global.fit.used > 0) {
-        evidence += describe("global", pa.global.fit);
-        if (settled(pa.global.fit)) {
-          global.push_back(pa.global.fit.value);
-          if (declared.order && pa.global.fit.value < p - 0.25) {
-            below = true;
-            evidence += " <- below " + std::to_string(*declared.order);
-          }
-        }
-      } else {
-        evidence += "global not resolved";
-      }
-      if (pa.global.stalled) {
-        const stall& st = *pa.global.stalled;
-        stalled = true;
-        evidence += ", converges to " + sci(st.error) + ", not to 0 (at h = " + sci(st.h) +
-                    " the runs agree to " + sci(st.change) + "; floor eps sqrt(evaluations) = " +
-                    sci(st.floor) + ", error " + sci(st.margin) + " floors)";
-      }
-      if (pa.local.fit.used > 0) {
-        evidence += ", " + describe("local", pa.local.fit);
-        if (settled(pa.local.fit)) {
-          local.push_back(pa.local.fit.value);
-          if (declared.order && pa.local.fit.value < p + 1 - 0.25) {
-            below = true;
-            evidence += " <- below " + std::to_string(*declared.order + 1);
-          }
-        }
-      }
-      evidence += "; ";
-    }
-    const double least = global.empty() ? 0 : *std::min_element(global.begin(), global.end());
-    const bool above = declared.order && !global.empty() && least > p + 0.75 &&
-                       !local.empty() &&
-                       *std::min_element(local.begin(), local.end()) > p + 1.75;
-    if (above) evidence += "every settled fit is above the declared order";
-    v.measured = stalled ? "stalls" : global.empty() ? "-" : fixed(least);
-    v.evidence = evidence;
-    v.result = global.empty() && local.empty() && !stalled ? outcome::not_measured
-               : !declared.order              ? outcome::not_declared
-               : below || above || stalled    ? outcome::contradicted
-               : global.empty()               ? outcome::not_measured
-                                              : outcome::confirmed;
-    out.push_back(v);
-  }
-  const auto property = [&](const char* name, const std::optional<bool>& claim,
-                            auto member) {
-    verdict v;
-    v.claim = name;
-    v.declared = claim ? (*claim ? "yes" : "no") : "-";
-    bool any = false, all_within = true;
-    std::string evidence;
-    for (const auto& p : ps) {
-      const std::optional<defect_study>& d = p.*member;
-      if (!p.skipped.empty() || !d) continue;
-      any = true;
-      all_within = all_within && d->within_rounding;
-      if (d->resolution > 0) {
-        evidence += p.problem + ": " +
-                    (d->within_rounding ? "no defect above " + sci(d->resolution)
-                                        : "defect " + sci(d->worst_relative) +
-                                              " above the resolution " + sci(d->resolution)) +
-                    " (finite differences)";
-        if (d->area_defect)
-          evidence += ", det M - 1 = " + sci(*d->area_defect) + " (resolution " +
-                      sci(*d->area_resolution) + ")";
-      } else {
-        evidence += p.problem + ": " + sci(d->worst_eps) + " eps (budget " + sci(d->budget_eps) + ")";
-      }
-      if (!d->within_rounding && d->exponent.used > 0)
-        evidence += ", ~ h^" + fixed(d->exponent.value, 1);
-      evidence += "; ";
-    }
-    v.measured = !any ? "-" : all_within ? "yes" : "no";
-    v.evidence = evidence;
-    v.result = !any ? outcome::not_measured
-               : !claim ? outcome::not_declared
-               : (*claim == all_within) ? outcome::confirmed
-                                        : outcome::contradicted;
-    out.push_back(v);
-  };
-  property("symplectic", declared.symplectic, &problem_audit::symplectic);
-  property("symmetric", declared.symmetric, &problem_audit::symmetric);
-  return out;
-}
-
 inline bool selected(const std::vector<std::string>& names, const std::string& name) {
   if (names.empty()) return true;
   for (const auto& n : names)
@@ -563,10 +439,22 @@ stepper_audit audit_stepper(const stepper_under_audit<T>& s,
   out.tier = std::string(tier_traits<T>::name);
   out.digits = tier_digits<T>();
   out.declared = s.declared;
+  out.structure = s.structure;
   for (const auto& pr : problems) {
     if (!detail::selected(opt.problems, pr.name)) continue;
     problem_audit pa;
     pa.problem = pr.name;
+    // A problem the method declares it cannot run is skipped with the reason.
+    if (s.structure.canonical && !pr.canonical) {
+      pa.skipped = "needs a canonical (q, p) split (declared); " + pr.name + " is not canonical";
+      out.problems.push_back(pa);
+      continue;
+    }
+    if (s.structure.separable && !pr.separable) {
+      pa.skipped = "needs a separable H = |p|^2/2 + V(q) (declared); " + pr.name + " is not separable";
+      out.problems.push_back(pa);
+      continue;
+    }
     if (opt.progress) opt.progress(s.name + " [" + out.tier + "] on " + pr.name);
     // Can the stepper take the problem? One step tells (splitting needs separable H).
     try {
@@ -606,7 +494,7 @@ stepper_audit audit_stepper(const stepper_under_audit<T>& s,
       guarded("long run", [&] { pa.run = detail::run_long(s, pr, opt); });
     out.problems.push_back(std::move(pa));
   }
-  out.verdicts = detail::judge(out.declared, out.problems);
+  out.verdicts = judge(out.declared, out.problems, detail::eps_of<T>());
   if (opt.timing)
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;

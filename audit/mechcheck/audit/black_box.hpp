@@ -49,6 +49,11 @@ struct black_box {
   std::string name;
   std::string origin;  ///< where it and its claims come from (shown in the report)
   claims declared;
+  /// What the method needs of a problem: a splitting or symplectic Euler that takes its
+  /// velocity and force from the q and p parts of the right-hand side needs a canonical,
+  /// separable problem (structure.canonical = structure.separable = true), and is run on
+  /// those only; the others are listed as skipped with the reason.
+  method_structure structure;
   /// A context for the runs on one system (may be null for a stateless step).
   std::function<void*(const ode_system&)> create;
   c_step step = nullptr;
@@ -188,6 +193,7 @@ inline stepper_under_audit<double> black_box_stepper(black_box box) {
   s.name = box.name;
   s.origin = box.origin;
   s.declared = box.declared;
+  s.structure = box.structure;
   s.finite_differences = true;
   auto shared = std::make_shared<const black_box>(std::move(box));
   s.make = [shared](const erased_system<double>& system) -> step_function<double> {
@@ -246,9 +252,8 @@ black_box library_stepper_as_black_box(std::string name, Eigen::Index nq_hint = 
   b.name = std::move(name);
   b.origin = "mechcheck stepper behind the black-box C call";
   using M = Method<c_system, dynamic_vector<double>>;
-  if constexpr (requires { M::order; }) b.declared.order = static_cast<int>(M::order);
-  if constexpr (requires { M::symplectic; }) b.declared.symplectic = M::symplectic;
-  if constexpr (requires { M::symmetric; }) b.declared.symmetric = M::symmetric;
+  b.declared = detail::claims_of<M>();
+  b.structure = detail::structure_of<M>();
   b.create = [nq_hint](const ode_system& ode) -> void* {
     const Eigen::Index nq = nq_hint >= 0 ? nq_hint : ode.dimension / 2;
     c_system sys{ode, nq, dynamic_vector<double>::Zero(nq)};

@@ -566,7 +566,7 @@ engine_audit audit_engine(const engine_integrator& in, const engine_options& opt
   }
   claims c;
   c.order = in.declared_order;
-  out.order = detail::judge(c, problems).front();
+  out.order = judge_order(c, problems, eps);
   out.symplectic = judge_symplectic(in, out.scenarios);
   return out;
 }

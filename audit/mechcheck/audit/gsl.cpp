@@ -82,6 +82,37 @@ void step(double* y, double t, double h, void* ctx) {
                             gsl_strerror(status) + ") at step " + std::to_string(c->steps) +
                             ", t = " + to_text(t) + ", h = " + to_text(h));
 }
+
+/// rk2's embedded formula: rk2.c sets yerr = h (k2 - (k1 + 4 k2 + k3)/6), the midpoint
+/// rule's step y + h k2 less the propagated one, so y + yerr is the midpoint rule's step.
+void embedded_step(double* y, double t, double h, void* ctx) {
+  step(y, t, h, ctx);
+  const auto* c = static_cast<const context*>(ctx);
+  for (int i = 0; i < c->ode.dimension; ++i) y[i] += c->yerr[std::size_t(i)];
+}
+
+black_box box_of(const type_info& info, double newton_tolerance, c_step stepper) {
+  black_box b;
+  const type_info* ti = &info;
+  b.create = [ti, newton_tolerance](const ode_system& ode) -> void* {
+    auto* c = new context{ti, ode, {}, nullptr, std::vector<double>(std::size_t(ode.dimension)), 0};
+    c->sys = gsl_odeiv2_system{&rhs, &jacobian, static_cast<size_t>(ode.dimension), c};
+    c->driver = gsl_odeiv2_driver_alloc_y_new(&c->sys, *ti->type, 1e-3, newton_tolerance,
+                                              newton_tolerance);
+    if (!c->driver) {
+      delete c;
+      throw error(std::string("gsl_odeiv2_driver_alloc_y_new (") + ti->name + ") failed");
+    }
+    return c;
+  };
+  b.step = stepper;
+  b.destroy = [](void* ctx) {
+    auto* c = static_cast<context*>(ctx);
+    if (c->driver) gsl_odeiv2_driver_free(c->driver);
+    delete c;
+  };
+  return b;
+}
 }  // namespace
 
 std::string version() { return GSL_VERSION; }
@@ -106,24 +137,27 @@ std::vector<black_box> one_step_types(double newton_tolerance) {
       b.origin += "; Newton error level from a driver control with epsabs = epsrel = " +
                   to_text(newton_tolerance);
     b.declared.order = static_cast<int>(order);
-    const type_info* ti = &info;
-    b.create = [ti, newton_tolerance](const ode_system& ode) -> void* {
-      auto* c = new context{ti, ode, {}, nullptr, std::vector<double>(std::size_t(ode.dimension)), 0};
-      c->sys = gsl_odeiv2_system{&rhs, &jacobian, static_cast<size_t>(ode.dimension), c};
-      c->driver = gsl_odeiv2_driver_alloc_y_new(&c->sys, *ti->type, 1e-3, newton_tolerance,
-                                                newton_tolerance);
-      if (!c->driver) {
-        delete c;
-        throw error(std::string("gsl_odeiv2_driver_alloc_y_new (") + ti->name + ") failed");
-      }
-      return c;
-    };
-    b.step = &step;
-    b.destroy = [](void* ctx) {
-      auto* c = static_cast<context*>(ctx);
-      if (c->driver) gsl_odeiv2_driver_free(c->driver);
-      delete c;
-    };
+    // gsl_odeiv2_step_order "returns the order of the stepping function on the previous
+    // step": for an embedded pair the words admit the order of either formula. rk2 returns
+    // the lower (2 of "(2, 3)") and propagates the higher; its companion gsl::rk2/embedding
+    // propagates the lower, and measures that reading.
+    const bool embedded_pair = std::string(info.manual).find("embedded") != std::string::npos;
+    if (embedded_pair) b.declared.order_readings = {order_reading::embedded};
+    const black_box made = box_of(info, newton_tolerance, &step);
+    b.create = made.create;
+    b.step = made.step;
+    b.destroy = made.destroy;
+    if (std::string(info.name) == "rk2") {
+      black_box e = box_of(info, newton_tolerance, &embedded_step);
+      e.name = b.name + "/embedding";
+      e.origin = "GSL " + version() + " gsl_odeiv2_step_rk2's embedded formula, y + yerr (rk2.c: yerr = h (k2 - "
+                 "(k1 + 4 k2 + k3)/6), the midpoint rule's step less the propagated one); its order is the lower "
+                 "of the manual's \"(2, 3)\"";
+      e.declared.order = 2;
+      out.push_back(std::move(b));
+      out.push_back(std::move(e));
+      continue;
+    }
     out.push_back(std::move(b));
   }
   return out;

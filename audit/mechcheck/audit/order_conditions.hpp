@@ -73,9 +73,18 @@ struct order_condition_report {
   int max_order = 0;             ///< the orders evaluated (1..max_order)
   double row_sum = 0;            ///< max_i |sum_j a_ij - c_i|
   int stage_order = 0;  ///< the largest q with sum_j a_ij c_j^(k-1) = c_i^k / k, k <= q, to `tolerance`
+  int stage_order_exact = 0;  ///< the same to `exact_tolerance`
   double symplectic = 0;  ///< max |b_i a_ij + b_j a_ji - b_i b_j| (0: symplectic)
   double symmetric = 0;   ///< max |a_(s+1-i, s+1-j) + a_ij - b_j| and |b_(s+1-i) - b_i|
-  double tolerance = 0;   ///< what counts as satisfied: 64 eps(R) max(1, |coefficients|)
+  /// The relative precision the coefficients are given to (0: exact; 5e-61 for 60 decimal
+  /// digits; 2^-53 for double).
+  double precision = 0;
+  /// What counts as satisfied to R's rounding: 64 eps(R) max(1, |coefficients|) -- a
+  /// condition sums products of a few coefficients, each rounded once in R.
+  double exact_tolerance = 0;
+  /// What counts as satisfied at the precision given: 64 max(eps(R), precision) max(1,
+  /// |coefficients|), the same budget with the coefficients' own rounding.
+  double tolerance = 0;
 
   /// The largest p with every order <= p satisfied to `below` (0: not even consistent).
   int order(double below) const {
@@ -91,9 +100,11 @@ struct order_condition_report {
   }
 };
 
-/// Evaluates the order conditions of (A, b, c) up to max_order in R.
+/// Evaluates the order conditions of (A, b, c) up to max_order in R, for coefficients
+/// given to the relative `precision` (0: exact).
 template <class R>
-order_condition_report<R> order_conditions(const butcher_tableau<R>& t, int max_order = 10) {
+order_condition_report<R> order_conditions(const butcher_tableau<R>& t, int max_order = 10,
+                                           double precision = 0) {
   using std::abs;
   t.validate("order_conditions");
   const int s = t.stages();
@@ -107,7 +118,13 @@ order_condition_report<R> order_conditions(const butcher_tableau<R>& t, int max_
     largest = std::max<R>(largest, R(abs(t.b[std::size_t(i)])));
     for (int j = 0; j < s; ++j) largest = std::max<R>(largest, R(abs(t.a[std::size_t(i)][std::size_t(j)])));
   }
-  out.tolerance = 64 * static_cast<double>(std::numeric_limits<R>::epsilon()) * static_cast<double>(largest);
+  if (!(precision >= 0 && std::isfinite(precision)))
+    throw domain_error("order_conditions: the coefficients' precision must be >= 0 and finite, got " +
+                       std::to_string(precision));
+  out.precision = precision;
+  const double eps_r = static_cast<double>(std::numeric_limits<R>::epsilon());
+  out.exact_tolerance = 64 * eps_r * static_cast<double>(largest);
+  out.tolerance = 64 * std::max(eps_r, precision) * static_cast<double>(largest);
   for (std::size_t k = 0; k < trees.size(); ++k) {
     const rooted_tree& tree = trees[k];
     if (tree.order > max_order) break;
@@ -132,7 +149,7 @@ order_condition_report<R> order_conditions(const butcher_tableau<R>& t, int max_
     for (int j = 0; j < s; ++j) sum += t.a[std::size_t(i)][std::size_t(j)];
     out.row_sum = std::max(out.row_sum, static_cast<double>(R(abs(R(sum - t.c[std::size_t(i)])))));
   }
-  // Stage order: C(q) for q = 1, 2, ...
+  // Stage order: C(q) for q = 1, 2, ..., to the precision given and to R's rounding.
   for (int q = 1; q <= s + 1; ++q) {
     double worst = 0;
     for (int i = 0; i < s; ++i) {
@@ -146,6 +163,7 @@ order_condition_report<R> order_conditions(const butcher_tableau<R>& t, int max_
       for (int e = 0; e < q; ++e) ci *= t.c[std::size_t(i)];
       worst = std::max(worst, static_cast<double>(R(abs(R(sum - ci / R(q))))));
     }
+    if (worst <= out.exact_tolerance && out.stage_order_exact == q - 1) out.stage_order_exact = q;
     if (worst > out.tolerance) break;
     out.stage_order = q;
   }

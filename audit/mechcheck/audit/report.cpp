@@ -40,7 +40,14 @@ std::string claim_cell(const stepper_audit& a, const char* claim) {
       if (p.symplectic) resolution = std::max(resolution, p.symplectic->resolution);
     if (resolution > 0) cell += format(" (FD, <%.0e)", resolution);
   }
-  if (v->result == verdict::outcome::contradicted) cell += " (contradicted)";
+  switch (v->result) {
+    case verdict::outcome::contradicted: cell += " (contradicted)"; break;
+    case verdict::outcome::not_resolvable: cell += " (not resolvable)"; break;
+    case verdict::outcome::reading: cell += " (reading)"; break;
+    case verdict::outcome::exceeds: cell += " (exceeds)"; break;
+    case verdict::outcome::to_precision_given: cell += " (to the precision given)"; break;
+    default: break;
+  }
   return cell;
 }
 
@@ -80,11 +87,37 @@ std::string evaluations_cell(const stepper_audit& a) {
   return "-";
 }
 
+/// "claims hold", "CONTRADICTED: order", "claims hold; order: reading", "nothing declared".
 std::string verdict_cell(const stepper_audit& a) {
+  std::string contradicted, other;
   bool any = false;
-  for (const auto& v : a.verdicts) any = any || v.result == verdict::outcome::confirmed;
-  if (!a.claims_hold()) return "CONTRADICTED";
-  return any ? "claims hold" : "nothing declared";
+  for (const auto& v : a.verdicts) {
+    switch (v.result) {
+      case verdict::outcome::confirmed: any = true; break;
+      case verdict::outcome::contradicted:
+        contradicted += (contradicted.empty() ? "" : ", ") + v.claim;
+        break;
+      case verdict::outcome::not_resolvable:
+      case verdict::outcome::reading:
+      case verdict::outcome::exceeds:
+      case verdict::outcome::to_precision_given:
+        any = true;
+        other += "; " + v.claim + ": " + outcome_text(v.result);
+        break;
+      default: break;
+    }
+  }
+  if (!contradicted.empty()) return "CONTRADICTED: " + contradicted + other;
+  return (any ? "claims hold" : "nothing declared") + other;
+}
+
+/// A verdict's readings and needs, after its evidence.
+std::string verdict_detail(const verdict& v) {
+  std::string out;
+  if (!v.needs.empty()) out += " Needs: " + v.needs + ".";
+  for (const auto& r : v.readings)
+    out += " Reading \"" + r.reading + "\": measured " + r.measured + (r.holds ? ", holds." : ", does not hold.");
+  return out;
 }
 
 /// [h, error, evaluations] and, where known, the change from the previous run.
@@ -131,6 +164,29 @@ json to_json(const defect_study& d) {
 
 json optional_claim(const std::optional<bool>& c) { return c ? json(*c) : json(nullptr); }
 
+/// A verdict with its evidence; the needs and readings where it has them.
+json verdict_json(const verdict& v) {
+  json j = {{"claim", v.claim},
+            {"declared", v.declared},
+            {"measured", v.measured},
+            {"result", outcome_text(v.result)},
+            {"evidence", v.evidence}};
+  if (!v.needs.empty()) j["needs"] = v.needs;
+  if (!v.readings.empty()) {
+    json r = json::array();
+    for (const auto& x : v.readings)
+      r.push_back({{"reading", x.reading}, {"measured", x.measured}, {"holds", x.holds}});
+    j["readings"] = r;
+  }
+  return j;
+}
+
+}  // namespace
+
+std::string verdict_json_text(const verdict& v) { return verdict_json(v).dump(); }
+
+namespace {
+
 json to_json(const stepper_audit& a, const report_options& opt) {
   json problems = json::array();
   for (const auto& p : a.problems) {
@@ -169,12 +225,7 @@ json to_json(const stepper_audit& a, const report_options& opt) {
     problems.push_back(jp);
   }
   json verdicts = json::array();
-  for (const auto& v : a.verdicts)
-    verdicts.push_back({{"claim", v.claim},
-                        {"declared", v.declared},
-                        {"measured", v.measured},
-                        {"result", outcome_name(v.result)},
-                        {"evidence", v.evidence}});
+  for (const auto& v : a.verdicts) verdicts.push_back(verdict_json(v));
   json j = {{"stepper", a.stepper},
             {"origin", a.origin},
             {"tier", a.tier},
@@ -182,7 +233,10 @@ json to_json(const stepper_audit& a, const report_options& opt) {
             {"declared",
              {{"order", a.declared.order ? json(*a.declared.order) : json(nullptr)},
               {"symplectic", optional_claim(a.declared.symplectic)},
-              {"symmetric", optional_claim(a.declared.symmetric)}}},
+              {"symmetric", optional_claim(a.declared.symmetric)},
+              {"energy", a.declared.energy ? json(*a.declared.energy == energy_behaviour::bounded ? "bounded" : "drift")
+                                           : json(nullptr)}}},
+            {"structure", {{"canonical", a.structure.canonical}, {"separable", a.structure.separable}}},
             {"claims_hold", a.claims_hold()},
             {"verdicts", verdicts},
             {"problems", problems}};
@@ -212,15 +266,7 @@ std::string cell(const std::string& s) {
 
 }  // namespace
 
-std::string outcome_name(verdict::outcome o) {
-  switch (o) {
-    case verdict::outcome::confirmed: return "confirmed";
-    case verdict::outcome::contradicted: return "CONTRADICTED";
-    case verdict::outcome::not_declared: return "not declared";
-    case verdict::outcome::not_measured: return "not measured";
-  }
-  return "?";
-}
+std::string outcome_name(verdict::outcome o) { return outcome_text(o); }
 
 void print_table(std::ostream& out, const std::vector<stepper_audit>& audits,
                  const report_options& opt) {
@@ -246,9 +292,11 @@ void print_table(std::ostream& out, const std::vector<stepper_audit>& audits,
   for (const auto& r : rows) line(r);
   for (const auto& a : audits)
     for (const auto& v : a.verdicts)
-      if (v.result == verdict::outcome::contradicted)
+      if (v.result != verdict::outcome::confirmed && v.result != verdict::outcome::not_declared &&
+          v.result != verdict::outcome::not_measured)
         out << a.stepper << " [" << a.tier << "]: " << v.claim << " declared " << v.declared
-            << ", measured " << v.measured << ": " << v.evidence << "\n";
+            << ", measured " << v.measured << ", " << outcome_text(v.result) << ": " << v.evidence
+            << verdict_detail(v) << "\n";
 }
 
 /// JSON has no NaN or infinity (nlohmann_json would write null): such a number, which a
@@ -290,7 +338,7 @@ std::string to_markdown(const std::vector<stepper_audit>& audits, const report_o
     if (!a.origin.empty()) md << "Claims from " << a.origin << ".\n\n";
     for (const auto& v : a.verdicts)
       md << "- **" << v.claim << "**: declared " << v.declared << ", measured " << v.measured
-         << ", " << outcome_name(v.result) << ". " << v.evidence << "\n";
+         << ", " << outcome_name(v.result) << ". " << v.evidence << verdict_detail(v) << "\n";
     for (const auto& p : a.problems) {
       if (!p.skipped.empty()) {
         md << "- " << p.problem << ": skipped (" << p.skipped << ")\n";

@@ -21,8 +21,12 @@ struct report_options {
   std::string long_run_problem = "kepler_e0.5";  ///< the problem of the plots' long runs
 };
 
-/// Words for an outcome ("confirmed", "CONTRADICTED", "not declared", "not measured").
+/// Words for an outcome (outcome_text: "confirmed", "CONTRADICTED", "not resolvable", ...).
 std::string outcome_name(verdict::outcome o);
+
+/// A verdict as the text of a JSON object: claim, declared, measured, result, evidence and,
+/// where it has them, needs and readings (the drivers' and engines' reports use it too).
+std::string verdict_json_text(const verdict& v);
 
 /// One line per stepper and tier: declared and measured order, symplectic, symmetric,
 /// the energy behaviour of the long run, evaluations per step and the verdict.

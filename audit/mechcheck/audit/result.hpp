@@ -39,11 +39,57 @@ struct fitted_exponent {
   std::optional<double> floor_h;  ///< the first h whose error was at the rounding floor
 };
 
+/// What the words of an order declaration can mean. The audit reads an order p first as
+/// the global order of the propagated solution; where the documentation's words admit
+/// another reading too, the stepper lists it, and a measurement that contradicts the first
+/// reading but confirms another is reported as a reading (both readings, each with its
+/// measurement), never as a contradiction.
+enum class order_reading {
+  global,       ///< the propagated solution converges as h^p (the one-step error as h^(p+1))
+  local_error,  ///< the error of one step is O(h^p): global order p - 1 ("third order" Verlet)
+  embedded,     ///< p is the order of the embedded formula whose difference from the
+                ///< propagated solution is the error estimate; measured on the target's
+                ///< "<name>/embedding" companion (apply_embedded_reading)
+};
+
+/// The long-run energy behaviour a method may declare: the growth class of its energy error.
+enum class energy_behaviour {
+  bounded,  ///< bounded oscillation (symplectic methods at small h; rounding walks on top)
+  drift,    ///< a drift that grows with time (linear or faster)
+};
+
 /// What a stepper declares; an empty optional is "not declared".
 struct claims {
   std::optional<int> order;
+  /// Readings of the order's words besides the global one (global is always tried first).
+  std::vector<order_reading> order_readings;
   std::optional<bool> symplectic;
   std::optional<bool> symmetric;
+  std::optional<energy_behaviour> energy;
+  /// The relative precision the method's coefficients are given to (2^-53 for a library
+  /// that stores them in double, 5e-11 for ten decimal digits); none: exact in every tier.
+  /// In a tier finer than it, a claim that fails at the tier's own floors but holds at the
+  /// floors of a tier of that epsilon is "to the precision given", not contradicted.
+  std::optional<double> coefficient_precision;
+  std::string coefficient_words;  ///< where that precision comes from (quoted in the verdict)
+  /// What the order conditions of the method's coefficients say, where there is a tableau
+  /// (e.g. "order 4 to 1.1e-16; order 5 fails by 2.3e-03"), quoted when the measured order
+  /// exceeds the declared one; algebraic_order is the order they give.
+  std::optional<int> algebraic_order;
+  std::string algebraic_words;
+};
+
+/// What a method needs of a problem. The audit runs a method only on the problems that
+/// fit it, and lists each skipped problem with the reason: a problem the method cannot run
+/// never yields a contradiction.
+struct method_structure {
+  /// Needs a canonical (q, p) split: a symplectic splitting, partitioned or composition
+  /// method has nothing to act on in a Lie-Poisson state (the free top's M).
+  bool canonical = false;
+  /// Needs H = T(p) + V(q) with T = |p|^2/2, i.e. q'' = -grad V(q) (splittings, RKN and
+  /// second-order-form methods): its velocity and force are evaluated apart.
+  bool separable = false;
+  bool any() const { return canonical || separable; }
 };
 
 /// An error that stopped falling above its rounding floor: the runs converge (they agree
@@ -120,15 +166,62 @@ struct problem_audit {
   std::vector<std::string> failures;
 };
 
+/// One reading of a claim's words and what the measurement says under it.
+struct claim_reading {
+  std::string reading;   ///< e.g. "global order 3 of the propagated solution"
+  std::string measured;  ///< the measurement under this reading
+  bool holds = false;
+};
+
 /// A claim and its outcome.
+///   confirmed         the measurement agrees with the claim;
+///   contradicted      it disagrees under every reading the documentation's words allow,
+///                     above the study's resolution and on settled fits;
+///   not_resolvable    the study cannot decide (`needs` says what would: a tier, a smaller
+///                     floor, a longer horizon);
+///   reading           the words admit a reading the measurement confirms (`readings`
+///                     holds each reading with its measurement);
+///   exceeds           the method measures better than declared (a higher order, a
+///                     symplectic map declared not to be);
+///   to_precision_given the claim holds to the precision the coefficients are given to,
+///                     and fails only below it;
+///   not_declared      nothing declared (the measurement is reported);
+///   not_measured      no study could run (every problem skipped or failed).
 struct verdict {
-  enum class outcome { confirmed, contradicted, not_declared, not_measured };
+  enum class outcome {
+    confirmed,
+    contradicted,
+    not_declared,
+    not_measured,
+    not_resolvable,
+    reading,
+    exceeds,
+    to_precision_given
+  };
   std::string claim;
   std::string declared;
   std::string measured;
   std::string evidence;
   outcome result = outcome::not_measured;
+  std::string needs;                   ///< not_resolvable: what the study would need
+  std::vector<claim_reading> readings;  ///< reading: every reading with its measurement
 };
+
+/// Words for an outcome: "confirmed", "CONTRADICTED", "not resolvable", "reading",
+/// "exceeds", "to the precision given", "not declared", "not measured".
+inline const char* outcome_text(verdict::outcome o) {
+  switch (o) {
+    case verdict::outcome::confirmed: return "confirmed";
+    case verdict::outcome::contradicted: return "CONTRADICTED";
+    case verdict::outcome::not_declared: return "not declared";
+    case verdict::outcome::not_measured: return "not measured";
+    case verdict::outcome::not_resolvable: return "not resolvable";
+    case verdict::outcome::reading: return "reading";
+    case verdict::outcome::exceeds: return "exceeds";
+    case verdict::outcome::to_precision_given: return "to the precision given";
+  }
+  return "?";
+}
 
 /// The audit of one stepper in one tier.
 struct stepper_audit {
@@ -137,11 +230,13 @@ struct stepper_audit {
   std::string tier;
   int digits = 0;
   claims declared;
+  method_structure structure;
   std::vector<problem_audit> problems;
   std::vector<verdict> verdicts;
   double seconds = 0;  ///< wall time of the audit (0 when timing is off)
 
-  /// True when no declared claim is contradicted.
+  /// True when no declared claim is contradicted (a reading, an excess, a claim held to
+  /// the precision given or one the study cannot resolve is not a contradiction).
   bool claims_hold() const {
     for (const auto& v : verdicts)
       if (v.result == verdict::outcome::contradicted) return false;

@@ -105,6 +105,52 @@ inline constexpr double floor_margin = 100;
 /// at distance S has error ~ S and change ~ C h^p -> 0.
 inline constexpr double stall_ratio = 8;
 
+/// The points of a study inside the convergent regime (error below 10^-1 of the scale).
+inline std::vector<study_point> convergent_points(const std::vector<study_point>& points) {
+  std::vector<study_point> out;
+  for (const auto& p : points)
+    if (p.error < 0.1) out.push_back(p);
+  return out;
+}
+
+/// The fit and the stall of a global study from its points, with the floors of a tier of
+/// epsilon eps: the halvings inside the convergent regime whose errors are both above
+/// floor_margin times the largest rounding floor of its runs; a stall when the finest run's
+/// error is floor_margin floors above its floor and stall_ratio times the change from the
+/// previous run, which is below 1/10. The study computes it with its tier's epsilon; the
+/// verdicts refit with a coarser one to judge a claim at the precision a method's
+/// coefficients are given to.
+inline void fit_global(order_study& study, double eps) {
+  double resolvable = 0;
+  for (const auto& p : study.points)
+    resolvable = std::max(resolvable, floor_margin * rounding_floor(eps, p.evaluations));
+  study.fit = fit_halvings(convergent_points(study.points), resolvable);
+  study.stalled.reset();
+  if (study.points.empty()) return;
+  const study_point& last = study.points.back();
+  const double floor = rounding_floor(eps, last.evaluations);
+  // The runs agree (their change below 1/10) while the error stays: a wrong limit,
+  // however far (a limit at distance 1 is a stall too, not an unresolved study).
+  if (last.change >= 0 && last.change < 0.1 && last.error >= floor_margin * floor &&
+      last.error >= stall_ratio * last.change)
+    study.stalled = stall{last.h, last.error, last.change, floor, last.error / floor};
+}
+
+/// The rounding floor of one step of m evaluations: 16 eps m (relative to the state's
+/// scale). A local study stops below it; a halving enters its fit when both errors are 16
+/// floors above the largest.
+inline double local_floor(double eps, double evaluations) {
+  return 16 * eps * std::max(evaluations, 1.0);
+}
+
+/// The fit of a local (one-step) study from its points with the floors of a tier of
+/// epsilon eps (see fit_global).
+inline void fit_local(order_study& study, double eps) {
+  double resolvable = 0;
+  for (const auto& p : study.points) resolvable = std::max(resolvable, 16 * local_floor(eps, p.evaluations));
+  study.fit = fit_halvings(convergent_points(study.points), resolvable);
+}
+
 /// Global order study: runs of n = n0, 2 n0, 4 n0, ... steps (run(n) -> study_run; failed
 /// runs are skipped: a coarse step can leave the convergent regime) until a run's error is
 /// within floor_margin of its rounding floor (finer steps measure rounding only) or n
@@ -139,19 +185,7 @@ order_study halving_study(Run&& run, long n0, long max_steps, double eps,
       if (f.used == 3 && f.spread < 0.05) break;
     }
   }
-  std::vector<study_point> convergent;
-  for (const auto& p : study.points)
-    if (p.error < 0.1) convergent.push_back(p);
-  study.fit = fit_halvings(convergent, resolvable);
-  if (!study.points.empty()) {
-    const study_point& last = study.points.back();
-    const double floor = rounding_floor(eps, last.evaluations);
-    // The runs agree (their change below 1/10) while the error stays: a wrong limit,
-    // however far (a limit at distance 1 is a stall too, not an unresolved study).
-    if (last.change >= 0 && last.change < 0.1 && last.error >= floor_margin * floor &&
-        last.error >= stall_ratio * last.change)
-      study.stalled = stall{last.h, last.error, last.change, floor, last.error / floor};
-  }
+  fit_global(study, eps);
   return study;
 }
 

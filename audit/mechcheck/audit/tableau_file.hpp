@@ -2,21 +2,38 @@
 /// A Butcher tableau from a JSON file, read without passing through double, and its
 /// analysis: the order conditions by rooted trees (order_conditions.hpp) in mpfr100, the
 /// embedding's, c = A 1, the stage order, the symplecticity condition b_i a_ij + b_j a_ji -
-/// b_i b_j = 0 and time symmetry. `mechcheck-audit --tableau FILE` prints it and audits
-/// the tableau's stepper (tableau.hpp) in double and mpfr50.
+/// b_i b_j = 0 and time symmetry -- each judged at the precision the coefficients are given
+/// to. `mechcheck-audit --tableau FILE` prints it and audits the tableau's stepper
+/// (tableau.hpp) in double and mpfr50. docs/tableau-format.md describes the file.
 ///
 /// The file:
 ///   {"name": "dopri5", "A": [[...], ...], "b": [...], "c": [...],
 ///    "bhat": [...],                                  (optional: the embedding)
 ///    "order": 5, "embedding_order": 4,                (optional: what is declared)
+///    "stage_order": 1,                                (optional)
 ///    "symplectic": false, "symmetric": false,         (optional)
+///    "precision": "exact" | <digits>,                 (optional: see below)
 ///    "source": "where the coefficients come from"}    (optional)
 /// Every coefficient is a string: a decimal ("0.25", "-1.5e-3") read directly into 100
 /// digits, or an exact rational "p/q" of decimal integers; a JSON integer is accepted
 /// (it is exact), a JSON number with a fraction or exponent is not (it has been through
-/// double). Any malformed entry -- a wrong shape, a non-number, a missing c, implicit
-/// stages whose block of A is singular -- is a tableau_error naming the file, the entry
-/// and the value.
+/// double). Any malformed entry -- a wrong shape, a non-number, a missing c, a coefficient
+/// longer than max_coefficient_length characters, more than max_stages stages -- is a
+/// tableau_error naming the file, the entry and the value.
+///
+/// The precision given: rationals and integers are exact, and so are short decimals (at
+/// most short_decimal_digits significant digits: 0.5, 0.25, 0.2 are exact in every
+/// published tableau); a longer decimal is its author's value to the digits written. The
+/// file's precision is that of its longest decimal, N significant digits (relative
+/// rounding 5 10^-N); a file without long decimals is exact. "precision": "exact" declares
+/// every decimal exact, "precision": N the digits its coefficients hold. A condition holds
+/// "exactly" within the rounding of mpfr100, "to the N digits given" within the rounding of
+/// N digits, and fails beyond.
+///
+/// An implicit block of A may be singular: for h L |A| < 1 (L the Lipschitz constant of the
+/// vector field) the stage equations K = f(y + h (A (x) I) K) are a contraction, whatever A,
+/// and have one solution (Newton's matrix I - h A (x) J is regular for small h); a singular
+/// A costs stiff accuracy, not existence, so such a tableau is accepted.
 
 #include <filesystem>
 #include <optional>
@@ -24,6 +41,7 @@
 #include <vector>
 
 #include "mechcheck/audit/order_conditions.hpp"
+#include "mechcheck/audit/result.hpp"
 #include "mechcheck/core.hpp"
 
 namespace mechcheck::audit {
@@ -34,14 +52,33 @@ class tableau_error : public error {
   using error::error;
 };
 
+/// Bounds on untrusted input: a coefficient's text, and the stages.
+inline constexpr std::size_t max_coefficient_length = 1000;
+inline constexpr std::size_t max_stages = 64;
+/// Decimals with at most this many significant digits are exact (0.5, 0.25, 0.125).
+inline constexpr int short_decimal_digits = 4;
+
 struct tableau_file {
   std::string path;
   std::string name;
   std::string source;
   butcher_tableau<mpfr100> tableau;
   std::vector<mpfr100> bhat;  ///< empty: no embedding
-  std::optional<int> order, embedding_order;
+  std::optional<int> order, embedding_order, stage_order;
   std::optional<bool> symplectic, symmetric;
+  /// The significant digits the coefficients are given to (0: exact), and its relative
+  /// rounding 5 10^-digits (0 when exact).
+  int digits = 0;
+  double precision = 0;
+  /// "exact: rationals, integers and short decimals", "40 significant digits, its longest decimal".
+  std::string precision_words = "exact";
+};
+
+/// A coefficient read from its text: its value and the significant digits it was written
+/// with (0: exact -- a rational, an integer or a short decimal).
+struct coefficient_text {
+  mpfr100 value;
+  int digits = 0;
 };
 
 /// Reads and validates a tableau file. Throws tableau_error.
@@ -49,26 +86,32 @@ tableau_file read_tableau(const std::filesystem::path& file);
 
 /// Parses one coefficient ("0.25", "1/3", "-2e-3"); throws tableau_error naming `where`.
 mpfr100 parse_coefficient(const std::string& text, const std::string& where);
+/// The same with the digits it was written with (0: exact).
+coefficient_text read_coefficient(const std::string& text, const std::string& where);
 
-/// How a declared order compares with the order conditions.
+/// How a condition compares with its tolerance.
 enum class order_agreement {
-  exact,            ///< every condition up to p within mpfr100 rounding
-  double_rounding,  ///< within the rounding of coefficients stored in double (8 eps(double))
-  contradicted      ///< a condition up to p fails by more
+  exact,               ///< within mpfr100 rounding
+  to_precision_given,  ///< within the rounding of the precision the coefficients are given to
+  contradicted         ///< fails by more
 };
 
 struct tableau_analysis {
   std::string name, path;
   int stages = 0;
   std::string kind;  ///< "explicit", "diagonally implicit", "implicit"
+  std::string precision_words;  ///< the precision the coefficients are given to
   order_condition_report<mpfr100> method;
   std::optional<order_condition_report<mpfr100>> embedding;
   std::optional<int> declared_order, declared_embedding_order;
   std::optional<order_agreement> order_verdict, embedding_verdict;
-
-  /// The largest order with every condition within `below`.
-  static int order_to(const order_condition_report<mpfr100>& r, double below) {
-    return r.order(below);
+  /// Every declared claim judged algebraically (order, embedding order, stage order,
+  /// symplectic, symmetric), in the audit's vocabulary.
+  std::vector<verdict> verdicts;
+  const verdict* find(const std::string& claim) const {
+    for (const auto& v : verdicts)
+      if (v.claim == claim) return &v;
+    return nullptr;
   }
 };
 
@@ -77,6 +120,15 @@ tableau_analysis analyse(const tableau_file& t, int max_order = 10);
 
 /// The agreement of a declared order p with a report.
 order_agreement agreement(const order_condition_report<mpfr100>& r, int p);
+
+/// "order 5 exactly; order 6 fails by 1.2e-03", "order 4 to the precision given (residual
+/// 7.8e-12); order 5 fails by ...": what the order conditions say, for reports and for the
+/// claims of a stepper built from the tableau.
+std::string order_phrase(const order_condition_report<mpfr100>& r);
+
+/// The claims a stepper of the tableau carries beside its declared ones: the coefficients'
+/// precision, and the order its conditions give with their words.
+void add_algebraic_claims(claims& c, const order_condition_report<mpfr100>& r, const std::string& precision_words);
 
 /// The analysis as text (for the command), JSON and Markdown.
 std::string describe(const tableau_analysis& a);

@@ -40,6 +40,9 @@ class composition {
   static constexpr int order = Order;
   static constexpr bool symplectic = true;
   static constexpr bool symmetric = true;
+  /// The energy error stays bounded over long runs (a symplectic map at small h).
+  static constexpr bool bounded_energy = true;
+  static constexpr bool separable = true;  ///< Stormer-Verlet's: needs H = |p|^2/2 + V(q)
   using scalar = typename Vec::Scalar;
 
   explicit composition(System system)

@@ -20,6 +20,8 @@ struct explicit_euler {
   static constexpr int order = 1;
   static constexpr bool symplectic = false;
   static constexpr bool symmetric = false;
+  /// The energy error drifts (a non-symplectic, non-symmetric method).
+  static constexpr bool bounded_energy = false;
   using scalar = typename Vec::Scalar;
   System system;
   explicit_euler(System s) : system(std::move(s)) {}  // implicit: Method{system} builds it
@@ -50,6 +52,8 @@ struct rk4 {
   static constexpr int order = 4;
   static constexpr bool symplectic = false;
   static constexpr bool symmetric = false;
+  /// The energy error drifts (a non-symplectic, non-symmetric method).
+  static constexpr bool bounded_energy = false;
   using scalar = typename Vec::Scalar;
   using real = real_type_t<scalar>;
   System system;

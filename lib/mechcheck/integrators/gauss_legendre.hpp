@@ -101,6 +101,8 @@ class gauss_legendre {
   static constexpr int order = 2 * Stages;
   static constexpr bool symplectic = true;
   static constexpr bool symmetric = true;
+  /// The energy error stays bounded over long runs (a symplectic map at small h).
+  static constexpr bool bounded_energy = true;
   using scalar = typename Vec::Scalar;
   using real = real_type_t<scalar>;
 

@@ -20,6 +20,10 @@ struct symplectic_euler {
   static constexpr int order = 1;
   static constexpr bool symplectic = true;
   static constexpr bool symmetric = false;
+  /// The energy error stays bounded over long runs (a symplectic map at small h).
+  static constexpr bool bounded_energy = true;
+  /// Evaluates velocity and force apart: needs H = |p|^2/2 + V(q).
+  static constexpr bool separable = true;
   using scalar = typename Vec::Scalar;
   System system;
   symplectic_euler(System s) : system(std::move(s)) {}  // implicit: Method{system} builds it
@@ -53,6 +57,9 @@ class stormer_verlet {
   static constexpr int order = 2;
   static constexpr bool symplectic = true;
   static constexpr bool symmetric = true;
+  /// The energy error stays bounded over long runs (a symplectic map at small h).
+  static constexpr bool bounded_energy = true;
+  static constexpr bool separable = true;  ///< needs H = |p|^2/2 + V(q)
   using scalar = typename Vec::Scalar;
   using real = real_type_t<scalar>;
   explicit stormer_verlet(System system) : system_(std::move(system)) {}
@@ -167,6 +174,9 @@ template <class System, class Vec>
 class splitting {
  public:
   static constexpr bool symplectic = true;
+  /// The energy error stays bounded over long runs (a symplectic map at small h).
+  static constexpr bool bounded_energy = true;
+  static constexpr bool separable = true;  ///< needs H = |p|^2/2 + V(q)
   using scalar = typename Vec::Scalar;
   using real = real_type_t<scalar>;
 
