@@ -190,6 +190,10 @@ class multibody_run final : public engine_run {
     body_->compTreeLinkVelocities(&omega[0], &v[0]);
     r.omega = r.rotation * vec(omega[1]);
     r.velocity = r.omega.cross(r.position);  // the pivot is fixed at the origin
+    if (s_.joint == joint_kind::hinge_y) {  // the revolute joint's coordinates, as Bullet integrates them
+      r.joint_q = Eigen::VectorXd::Constant(1, body_->getJointPos(0));
+      r.joint_v = Eigen::VectorXd::Constant(1, body_->getJointVel(0));
+    }
     return r;
   }
 

@@ -3,19 +3,27 @@
 /// with an exact reference for its observables; an engine adapter sets it up in the
 /// engine's own terms, steps it with a fixed h and reads the state back. Per engine
 /// integrator and scenario the audit measures:
-///   - the global order of the observables: |obs(T) - exact(T)| / scale while h halves
-///     (the halving study of studies.hpp, with its rounding floor and stall detection);
+///   - the global order of each class of observables (orientation, angular velocity, joint
+///     coordinates, position, velocity): |obs(T) - exact(T)| / scale while h halves (the
+///     halving study of studies.hpp, with its rounding floor and stall detection), so that
+///     one run says "order 2 in the orientation, 4 in the angular velocity";
 ///   - over a long run, the growth class of the relative energy error and of the
 ///     angular-momentum error (world frame, magnitude and direction together) where the
 ///     scenario conserves them (growth_recorder: bounded, random walk, linear drift);
+///   - the constraint violation of a jointed body as its own measurement: the separation of
+///     the joint's anchor from the pivot, the anchor's velocity and, for a hinge, the tilt of
+///     its axis, after one step and over the long run;
+///   - on hinge scenarios, the area of one step (det of its Jacobian) and the reversal from
+///     one consistent set of coordinates: the engine's own joint coordinates where it has
+///     them, the body frame's rotation and angular velocity otherwise (named in the report);
 ///   - evaluations are the engine's business: the cost is wall time per step (timing only).
-/// The declared order is what the engine's documentation says (quoted in `origin`); it is
-/// confirmed or contradicted with the rule of the stepper audit (a settled fit below
-/// p - 0.25, or a stall above the floor).
+/// The claims are what the engine's documentation says (quoted in `origin`), judged with
+/// the stepper audit's rules (verdicts.hpp), per observable class for the order.
 ///
 /// An engine's failure (its error handler, a NaN state) is a typed error from step(),
 /// recorded as "failed at step N" in the result; a scenario an engine cannot express is
-/// refused by name (scenario_refused).
+/// refused by name (scenario_refused); a start that throws anything else is a recorded
+/// failure of that scenario, never an exception out of the audit.
 
 #include <functional>
 #include <memory>
@@ -89,6 +97,14 @@ struct scenario {
   /// The observables at time t (exact) and their scale.
   std::function<Eigen::VectorXd(double)> exact;
   double scale = 1;
+  /// The classes of the observables: a name ("orientation", "angular velocity", "joint
+  /// coordinates", "position", "velocity") and the range [first, first + count) of the
+  /// observables it holds. The order is measured and judged per class.
+  struct observable_class {
+    std::string name;
+    int first = 0, count = 0;
+  };
+  std::vector<observable_class> classes;
 };
 
 /// The scenarios every engine is asked for.
@@ -106,6 +122,20 @@ double hinge_inertia(const scenario& s);
 struct body_reading {
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
   Eigen::Vector3d position{0, 0, 0}, velocity{0, 0, 0}, omega{0, 0, 0};
+  /// The engine's own coordinates of a hinge where it integrates in them (MuJoCo's qpos
+  /// and qvel, Simbody's q and u, Bullet multibody's joint position and velocity, ODE's
+  /// hinge angle and rate): angle (about world y, from the scenario's zero) and rate. Empty
+  /// where the engine has none; the hinge is then read from the body frame.
+  Eigen::VectorXd joint_q, joint_v;
+};
+
+/// How far a jointed body is from its joint: the anchor (the body frame's origin, the
+/// pivot) from the world origin, the anchor's velocity, and for a hinge the tilt of the
+/// body's y axis from world y -- all zero for a satisfied constraint.
+struct constraint_violation {
+  double position = 0;  ///< |x - R com|: the anchor's distance from the pivot, m
+  double velocity = 0;  ///< |v - omega x (R com)|: the anchor's speed, m/s
+  double axis = 0;      ///< |R e_y - e_y| (hinge): the axis' tilt, rad to first order
 };
 
 /// What the audit compares after each step.
@@ -113,6 +143,10 @@ struct engine_observation {
   Eigen::VectorXd observables;   ///< as the scenario's exact()
   double energy = 0;             ///< total energy (kinetic + potential)
   Eigen::Vector3d momentum{0, 0, 0};  ///< angular momentum about the origin (world frame)
+  /// Where the hinge observables came from: "the engine's joint coordinates" or "the body
+  /// frame (rotation and angular velocity)"; empty for other scenarios.
+  std::string readout;
+  std::optional<constraint_violation> constraint;  ///< jointed scenarios
 };
 
 /// The scenario's observables, energy and angular momentum of a body state.
@@ -131,8 +165,9 @@ class engine_run {
 struct engine_integrator {
   std::string name;    ///< e.g. "mujoco::RK4"
   std::string origin;  ///< the engine, its version and its documentation's words
-  std::optional<int> declared_order;
-  std::optional<bool> declared_symplectic;  ///< where the documentation says so (origin quotes it)
+  /// What the documentation declares (origin quotes it): order (with the readings its words
+  /// allow), symplectic, energy behaviour.
+  claims declared;
   std::function<std::unique_ptr<engine_run>(const scenario&)> start;
 };
 
@@ -140,7 +175,15 @@ struct engine_integrator {
 struct engine_scenario_audit {
   std::string scenario;
   std::string refused;  ///< non-empty: the engine cannot express it (why)
-  order_study global;
+  std::string failure;  ///< non-empty: starting or stepping it failed outside the studies
+  order_study global;   ///< every observable together (the plots)
+  /// The order study of each observable class, in the scenario's order.
+  std::vector<std::pair<std::string, order_study>> classes;
+  std::string readout;  ///< where the hinge observables came from (engine_observation)
+  /// Constraint violation of a jointed body: after the first step of h_long, and the
+  /// largest over the long run, with the growth exponent of the anchor's separation.
+  std::optional<constraint_violation> constraint_first, constraint_max;
+  std::optional<double> constraint_growth;
   std::optional<double> energy_growth, momentum_growth;  ///< exponents of the long run
   double energy_max = 0, momentum_max = 0;               ///< largest relative errors
   std::string long_run_failure;
@@ -165,9 +208,20 @@ struct engine_scenario_audit {
 
 struct engine_audit {
   std::string integrator, origin;
+  claims declared;
   std::vector<engine_scenario_audit> scenarios;
+  /// The order over every class ("2.00 in the orientation, 4.00 in the angular velocity"):
+  /// contradicted when a class contradicts it; and each class's own verdict.
   verdict order;
+  std::vector<verdict> order_by_class;
   verdict symplectic;  ///< |det - 1| against its resolution on the hinge scenarios
+  verdict energy;      ///< the long runs' energy growth against a declared behaviour
+  /// True when no declared claim is contradicted.
+  bool claims_hold() const {
+    for (const verdict* v : {&order, &symplectic, &energy})
+      if (v->result == verdict::outcome::contradicted) return false;
+    return true;
+  }
 };
 
 struct engine_options {

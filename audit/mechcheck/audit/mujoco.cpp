@@ -6,6 +6,7 @@
 #include <cstring>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -79,9 +80,74 @@ void put_quaternion(const Eigen::Matrix3d& r, double* q) {
   q[0] = e.w(), q[1] = e.x(), q[2] = e.y(), q[3] = e.z();
 }
 
+/// The fourth-order Runge-Kutta method on MuJoCo's state with the orientation integrated
+/// as a Runge-Kutta-Munthe-Kaas method: the same four evaluations as mj_RungeKutta (one
+/// mj_forward per stage), the stage orientation q0 exp(Theta_j) with Theta_j = h sum_l
+/// a_jl k_l, and each stage's body-frame angular velocity w_j taken through the dexp^-1
+/// series, k_j = w_j + (1/2) Theta_j x w_j + (1/12) Theta_j x (Theta_j x w_j) (terms to
+/// degree p - 2 = 2 suffice for order 4); hinge angles and positions as in classical RK4.
+/// mj_integratePos applies q exp(dt v) to the quaternion of every ball and free joint with
+/// v in the body frame, which is what Theta needs.
+void rk4_dexp_corrected(const mjModel* m, mjData* d, double h) {
+  const int nq = m->nq, nv = m->nv;
+  const std::vector<double> q0(d->qpos, d->qpos + nq), v0(d->qvel, d->qvel + nv);
+  const double t0 = d->time;
+  static constexpr double a[4][3] = {{0, 0, 0}, {0.5, 0, 0}, {0, 0.5, 0}, {0, 0, 1}};
+  static constexpr double b[4] = {1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6}, c[4] = {0, 0.5, 0.5, 1};
+  std::vector<std::vector<double>> k(4, std::vector<double>(std::size_t(nv))), acc = k;
+  std::vector<double> mix(static_cast<std::size_t>(nv));
+  for (int j = 0; j < 4; ++j) {
+    // The stage's positions and velocities.
+    std::fill(mix.begin(), mix.end(), 0.0);
+    std::vector<double> v = v0;
+    for (int l = 0; l < j; ++l)
+      for (int i = 0; i < nv; ++i) {
+        mix[std::size_t(i)] += a[j][l] * k[std::size_t(l)][std::size_t(i)];
+        v[std::size_t(i)] += h * a[j][l] * acc[std::size_t(l)][std::size_t(i)];
+      }
+    std::copy(q0.begin(), q0.end(), d->qpos);
+    mj_integratePos(m, d->qpos, mix.data(), h);
+    std::copy(v.begin(), v.end(), d->qvel);
+    d->time = t0 + c[j] * h;
+    mj_forward(m, d);
+    std::copy(d->qacc, d->qacc + nv, acc[std::size_t(j)].begin());
+    // The stage's position velocity: qvel, with every rotation's dexp^-1 correction.
+    k[std::size_t(j)] = v;
+    for (int jn = 0; jn < m->njnt; ++jn) {
+      const int type = m->jnt_type[jn];
+      if (type != mjJNT_BALL && type != mjJNT_FREE) continue;
+      const int adr = m->jnt_dofadr[jn] + (type == mjJNT_FREE ? 3 : 0);
+      const Eigen::Vector3d theta = h * Eigen::Map<const Eigen::Vector3d>(mix.data() + adr);
+      const Eigen::Vector3d w = Eigen::Map<const Eigen::Vector3d>(v.data() + adr);
+      const Eigen::Vector3d corrected = w + theta.cross(w) / 2 + theta.cross(theta.cross(w)) / 12;
+      for (int i = 0; i < 3; ++i) k[std::size_t(j)][std::size_t(adr + i)] = corrected(i);
+    }
+  }
+  std::fill(mix.begin(), mix.end(), 0.0);
+  std::vector<double> v = v0;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < nv; ++i) {
+      mix[std::size_t(i)] += b[j] * k[std::size_t(j)][std::size_t(i)];
+      v[std::size_t(i)] += h * b[j] * acc[std::size_t(j)][std::size_t(i)];
+    }
+  std::copy(q0.begin(), q0.end(), d->qpos);
+  mj_integratePos(m, d->qpos, mix.data(), h);
+  std::copy(v.begin(), v.end(), d->qvel);
+  d->time = t0 + h;
+}
+
+/// MuJoCo's own integrators, or mechcheck's RK4 with the dexp^-1 correction on top of
+/// mj_forward (integrator_dexp).
+constexpr int integrator_dexp = -1;
+
 class run final : public engine_run {
  public:
-  run(const scenario& s, int integrator) : s_(s), name_(std::string("mujoco::") + integrator_xml(integrator)) {
+  run(const scenario& s, int integrator)
+      : s_(s),
+        name_(integrator == integrator_dexp ? std::string("mujoco::RK4/dexp_corrected")
+                                            : std::string("mujoco::") + integrator_xml(integrator)),
+        dexp_(integrator == integrator_dexp) {
+    if (dexp_) integrator = mjINT_RK4;
     if (s.central != 0 && s.joint != joint_kind::free)
       throw scenario_refused(name_ + ": the central force is applied to a free body only");
     model_ = load(mjcf(s, integrator));
@@ -124,7 +190,10 @@ class run final : public engine_run {
       guard& operator=(const guard&) = delete;
     } g(&s_);
     try {
-      mj_step(model_, data_);
+      if (dexp_)
+        rk4_dexp_corrected(model_, data_, h);
+      else
+        mj_step(model_, data_);
     } catch (const error& e) {
       throw convergence_error(name_ + ": step " + std::to_string(steps_) + ": " + e.what());
     }
@@ -150,12 +219,17 @@ class run final : public engine_run {
     mj_objectVelocity(model_, data_, mjOBJ_BODY, 1, v, 0);  // (angular, linear) at xipos, world axes
     r.omega = Eigen::Map<const Eigen::Vector3d>(v);
     r.velocity = Eigen::Map<const Eigen::Vector3d>(v + 3);
+    if (s_.joint == joint_kind::hinge_y) {  // the hinge's qpos and qvel: what MuJoCo integrates
+      r.joint_q = Eigen::VectorXd::Constant(1, data_->qpos[0]);
+      r.joint_v = Eigen::VectorXd::Constant(1, data_->qvel[0]);
+    }
     return r;
   }
 
  private:
   scenario s_;
   std::string name_;
+  bool dexp_ = false;
   mjModel* model_ = nullptr;
   mjData* data_ = nullptr;
   long long steps_ = 0;
@@ -221,13 +295,24 @@ std::vector<engine_integrator> integrators() {
                " (mjmodel.h: \"" + i.words + "\"); declared order " + std::to_string(i.order) +
                (i.id == mjINT_RK4 ? " (the name)" : " (a first-order method by its description)") +
                "; the model from an MJCF string, mj_step at fixed timestep";
-    e.declared_order = i.order;
+    e.declared.order = i.order;
     // "semi-implicit Euler" names the symplectic Euler method (Hairer, Lubich & Wanner 2006,
     // section I.1.2) without saying so: no symplecticity is declared.
     const int id = i.id;
     e.start = [id](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, id); };
     out.push_back(std::move(e));
   }
+  // The fix of mujoco::RK4's orientation (docs/findings/upstream/mujoco-rk4.md), as an
+  // integrator of its own: the same four mj_forward evaluations a step.
+  engine_integrator e;
+  e.name = "mujoco::RK4/dexp_corrected";
+  e.origin = "MuJoCo " + version() + " mj_forward at each of the four stages of the classical RK4 tableau, with "
+             "the orientation integrated as a Runge-Kutta-Munthe-Kaas method (each stage's body-frame angular "
+             "velocity through the dexp^-1 series to degree 2): mechcheck's correction of mj_RungeKutta, declared "
+             "order 4";
+  e.declared.order = 4;
+  e.start = [](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, integrator_dexp); };
+  out.push_back(std::move(e));
   return out;
 }
 

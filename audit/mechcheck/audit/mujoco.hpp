@@ -18,12 +18,14 @@
 /// mjcb_passive callback, which MuJoCo calls at every evaluation of the forces (each RK4
 /// stage included).
 /// The integrators are mjINT_EULER, mjINT_RK4 and mjINT_IMPLICIT, named mujoco::Euler,
-/// mujoco::RK4 and mujoco::implicit, each with mjmodel.h's words for it.
+/// mujoco::RK4 and mujoco::implicit, each with mjmodel.h's words for it; and
+/// mujoco::RK4/dexp_corrected, mechcheck's correction of mj_RungeKutta's orientation on
+/// top of mj_forward (the same four evaluations a step; see mujoco.cpp).
 ///
 /// mju_user_error (which exits the process by default) is replaced by a handler that
 /// throws a mechcheck error; a MuJoCo warning during a step (d->warning counts) ends the
-/// run with a convergence_error naming the step; a non-finite qpos likewise. MuJoCo steps
-/// forward only: a negative h is a domain_error.
+/// run with a convergence_error naming the step; a non-finite qpos likewise. A zero or
+/// non-finite h is a domain_error; MuJoCo takes negative steps (the reversal study).
 
 #include <string>
 #include <vector>
@@ -38,7 +40,7 @@ std::string version();
 /// Install the error and warning handlers (done by every run; idempotent).
 void install_handlers();
 
-/// mujoco::Euler, mujoco::RK4, mujoco::implicit.
+/// mujoco::Euler, mujoco::RK4, mujoco::implicit, mujoco::RK4/dexp_corrected.
 std::vector<engine_integrator> integrators();
 
 /// How mujoco computes the inertia of its shapes (engines.hpp, shapes()).

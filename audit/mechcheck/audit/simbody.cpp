@@ -96,6 +96,10 @@ class run final : public engine_run {
     o.omega = Eigen::Map<const Eigen::Vector3d>(r.omega_world);
     o.position = Eigen::Map<const Eigen::Vector3d>(r.position);
     o.velocity = Eigen::Map<const Eigen::Vector3d>(r.velocity);
+    if (r.pin) {  // the pin's q and u: the coordinates Simbody integrates
+      o.joint_q = Eigen::VectorXd::Constant(1, r.q);
+      o.joint_v = Eigen::VectorXd::Constant(1, r.u);
+    }
     return o;
   }
 
@@ -133,8 +137,12 @@ std::vector<engine_integrator> integrators() {
     e.name = std::string("simbody::") + d.name;
     e.origin = "Simbody " + version() + " " + d.name + "Integrator at a fixed step (setFixedStepSize, stepTo); " +
                d.words + (d.order ? "; declared order " + std::to_string(*d.order) : std::string());
-    e.declared_order = d.order;
-    e.declared_symplectic = d.symplectic;
+    e.declared.order = d.order;
+    e.declared.symplectic = d.symplectic;
+    // Verlet's "third order" is the order of its local error: VerletIntegrator.cpp gives
+    // the error estimate's order 3 and getMethodMaxOrder() 3 for a method whose global
+    // error is O(h^2). The words allow both readings.
+    if (std::string(d.name) == "Verlet") e.declared.order_readings = {order_reading::local_error};
     e.start = [i](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, i); };
     out.push_back(std::move(e));
   }

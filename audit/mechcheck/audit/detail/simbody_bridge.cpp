@@ -178,6 +178,11 @@ reading model::read() const {
     r.position[i] = x[i];
     r.velocity[i] = v[i];
   }
+  r.pin = st.getNQ() == 1;  // only the pin has one coordinate here
+  if (r.pin) {
+    r.q = st.getQ()[0];
+    r.u = st.getU()[0];
+  }
   return r;
 }
 

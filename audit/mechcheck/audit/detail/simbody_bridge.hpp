@@ -33,6 +33,8 @@ struct reading {
   double rotation[9];     ///< body to world, row-major
   double omega_world[3];  ///< angular velocity in the world frame
   double position[3], velocity[3];  ///< of the centre of mass
+  bool pin = false;       ///< a pin: q and u below are its angle and rate
+  double q = 0, u = 0;
 };
 
 /// Principal moments of a shape by Simbody's UnitInertia helpers (sphere, brick,
