@@ -585,6 +585,9 @@ const order_row order_rows[] = {
     {"above_globally_only", 1, {problem_with(fit{2.0, 0.0, 3}, fit{2.7, 0, 3})}, outcome::confirmed, "2.00"},
     {"above_on_one_problem", 1, {problem_with(fit{2.0, 0.0, 3}, fit{3.0, 0, 3}), problem_with(fit{1.0, 0.0, 3}, fit{2.0, 0, 3})}, outcome::confirmed, "1.00"},
     {"above_without_local", 1, {problem_with(fit{2.0, 0.0, 3}, std::nullopt)}, outcome::confirmed, "2.00"},
+    // An unsettled fit within the band on another problem: no excess (a table of order 4
+    // measured 5.00 on the linear oscillator, 3.87 unsettled on Kepler).
+    {"above_but_an_unsettled_fit_in_band", 4, {problem_with(fit{5.0, 0.0, 3}, fit{6.0, 0, 3}), problem_with(fit{3.87, 0.0, 1}, std::nullopt)}, outcome::confirmed, "5.00"},
     // A stall contradicts whatever the fits say (the fits end before it).
     {"stall", 3, {problem_with(fit{3.0, 0.0, 3}, fit{4.0, 0, 3}, true)}, outcome::contradicted, "stalls"},
     {"stall_without_fit", 3, {problem_with(std::nullopt, std::nullopt, true)}, outcome::contradicted, "stalls"},

@@ -191,9 +191,17 @@ TEST(black_box, bad_input_and_failing_steps_are_typed_errors) {
   } catch (const non_finite_error& e) {
     EXPECT_NE(std::string(e.what()).find("nan step: step 1 at t = 0"), std::string::npos) << e.what();
   }
-  // A failing step becomes a failed run in the audit, not a crash.
+  // A failing step becomes failed runs in the audit, not a crash, and never a skip (a
+  // skip is a problem the method declares it cannot run): every study fails, every claim
+  // reads "not measured".
   const auto a = audit::audit_stepper(audit::black_box_stepper(broken), quick());
-  for (const auto& p : a.problems) EXPECT_FALSE(p.skipped.empty()) << p.problem;
+  for (const auto& p : a.problems) {
+    EXPECT_TRUE(p.skipped.empty()) << p.problem;
+    ASSERT_FALSE(p.failures.empty()) << p.problem;
+    EXPECT_NE(p.failures.front().find("the first step"), std::string::npos) << p.failures.front();
+    EXPECT_EQ(p.global.fit.used, 0);
+  }
+  for (const auto& v : a.verdicts) EXPECT_NE(v.result, outcome::contradicted) << v.claim;
 }
 
 }  // namespace black_box_test

@@ -456,16 +456,22 @@ stepper_audit audit_stepper(const stepper_under_audit<T>& s,
       continue;
     }
     if (opt.progress) opt.progress(s.name + " [" + out.tier + "] on " + pr.name);
-    // Can the stepper take the problem? One step tells (splitting needs separable H).
+    // Can the stepper take the problem? One step tells (a splitting without a declared
+    // structure asks a non-separable system for its force). Any other failure of that step
+    // (an implicit solve that does not converge at h_local) is recorded, and the studies
+    // run: they step down from coarse steps and skip the runs that fail.
     try {
       state<T> x = pr.initial;
       pr.system.reset_evaluations();
       s.make(pr.system)(x, pr.h_local);
       pa.evaluations_per_step = static_cast<double>(pr.system.evaluations());
     } catch (const std::exception& e) {
-      pa.skipped = detail::is_not_separable(e) ? "needs a separable H" : e.what();
-      out.problems.push_back(pa);
-      continue;
+      if (detail::is_not_separable(e)) {
+        pa.skipped = "needs a separable H";
+        out.problems.push_back(pa);
+        continue;
+      }
+      pa.failures.push_back("the first step at h = " + to_text(pr.h_local) + ": " + e.what());
     }
     // A study whose step throws (a third-party error code, an implicit solve that fails,
     // a backward step a method refuses) is recorded as a failure, never left to end the
@@ -479,6 +485,9 @@ stepper_audit audit_stepper(const stepper_under_audit<T>& s,
     };
     guarded("global order", [&] { pa.global = detail::global_order(s, pr, opt); });
     guarded("local order", [&] { pa.local = detail::local_order(s, pr, opt); });
+    // A first step that failed left no count: take the local study's finest step's.
+    if (pa.evaluations_per_step == 0 && !pa.local.points.empty())
+      pa.evaluations_per_step = pa.local.points.back().evaluations;
     if (pr.canonical && s.make_ad)
       guarded("symplectic condition", [&] {
         pa.symplectic = detail::symplectic_condition(s, pr, opt, pa.evaluations_per_step);

@@ -18,8 +18,9 @@
 ///     converges to a wrong limit), or a decisive global fit lies below p - 0.25, or a
 ///     decisive local fit below p + 1 - 0.25 -- unless another reading the words allow
 ///     (order_reading) holds, which makes it a reading;
-///   - exceeds when the least settled global fit is above p + 0.75 and every settled local
-///     fit above p + 1.75 (with what the order conditions say, where there is a tableau);
+///   - exceeds when every resolved global fit is above p + 0.75 (settled or not) and every
+///     settled local fit above p + 1.75 (with what the order conditions say, where there is
+///     a tableau);
 ///   - confirmed when a settled global fit reaches p - 0.25 (a problem may show more:
 ///     symplectic Euler is of order 2 on the oscillator);
 ///   - not resolvable otherwise, with what the study would need.
@@ -81,6 +82,7 @@ inline std::string describe_fit(const char* what, const fitted_exponent& f) {
 /// local order l (g + 1).
 struct order_assessment {
   bool stalled = false, below = false, above = false, consistent = false;
+  bool some_fit_not_above = false;  ///< a resolved global fit (settled or not) at or below g + 0.75
   bool any_fit = false;                   ///< some fit or stall was resolved
   std::vector<double> settled_global, settled_local;
   std::string evidence;
@@ -98,6 +100,7 @@ inline order_assessment assess_order(const std::vector<problem_audit>& ps, doubl
     const fitted_exponent& lf = pa.local.fit;
     if (gf.used > 0) {
       a.any_fit = true;
+      if (!(gf.value > g + rules::above_band)) a.some_fit_not_above = true;
       ev += describe_fit("global", gf);
       if (settled(gf)) {
         a.settled_global.push_back(gf.value);
@@ -144,7 +147,9 @@ inline order_assessment assess_order(const std::vector<problem_audit>& ps, doubl
   if (!a.settled_global.empty() && !a.settled_local.empty()) {
     const double least_g = *std::min_element(a.settled_global.begin(), a.settled_global.end());
     const double least_l = *std::min_element(a.settled_local.begin(), a.settled_local.end());
-    a.above = least_g > g + rules::above_band && least_l > l + rules::above_band;
+    // An excess needs every resolved global fit above (an unsettled one below the band on
+    // another problem is not evidence of a higher order) and every settled local fit.
+    a.above = least_g > g + rules::above_band && least_l > l + rules::above_band && !a.some_fit_not_above;
   }
   return a;
 }
