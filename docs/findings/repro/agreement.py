@@ -1,0 +1,169 @@
+#!/usr/bin/env python3
+"""Holds each reproducer's numbers against the audit's: every published finding is measured
+twice, by mechcheck's audit and by a program that uses only the library it is about, and
+the two must agree within the tolerance stated here (derived from what each measures).
+
+Usage: agreement.py REPRO_OUTPUT_DIR AUDIT_DIR   (ci/findings runs it)
+Exits 1 when a pair disagrees or a number is missing, naming it."""
+import json
+import math
+import os
+import sys
+
+repro_dir, audit_dir = sys.argv[1], sys.argv[2]
+
+
+def repro(program, key):
+    path = os.path.join(repro_dir, program + ".txt")
+    with open(path) as f:
+        for line in f:
+            name, _, value = line.strip().partition(" ")
+            if name == key:
+                return float(value)
+    raise KeyError(f"{program}: no line '{key}' in {path}")
+
+
+def load(name):
+    with open(os.path.join(audit_dir, name)) as f:
+        return json.load(f)
+
+
+def engine(integrator):
+    for a in load("engines/engines.json")["integrators"]:
+        if a["integrator"] == integrator:
+            return a
+    raise KeyError(f"engines.json: no integrator {integrator}")
+
+
+def engine_scenario(integrator, scenario):
+    for s in engine(integrator)["scenarios"]:
+        if s["scenario"] == scenario:
+            return s
+    raise KeyError(f"engines.json: {integrator} has no scenario {scenario}")
+
+
+def class_fit(integrator, scenario, name):
+    return engine_scenario(integrator, scenario)["classes"][name]["fit"]["value"]
+
+
+def shape_error(engine_name, shape):
+    for s in load("engines/engines.json")["shapes"]:
+        if s["engine"] == engine_name and s["shape"] == shape:
+            return s["relative_error"]
+    raise KeyError(f"engines.json: no shape {engine_name} {shape}")
+
+
+def stepper(report, name, tier):
+    for a in load(report)["audits"]:
+        if a["stepper"] == name and a["tier"] == tier:
+            return a
+    raise KeyError(f"{report}: no stepper {name} [{tier}]")
+
+
+def problem(report, name, tier, problem_name):
+    for p in stepper(report, name, tier)["problems"]:
+        if p["problem"] == problem_name:
+            return p
+    raise KeyError(f"{report}: {name} has no problem {problem_name}")
+
+
+def horizon(driver, multiple):
+    for a in load("drivers/drivers.json"):
+        if a["driver"] == driver:
+            for m, r in a["horizon"]["ratio"]:
+                if m == multiple:
+                    return r
+    raise KeyError(f"drivers.json: no horizon {multiple} for {driver}")
+
+
+def largest_axis_error(program, shape):
+    return max(abs(repro(program, f"{shape}_{axis}_bullet_over_exact") - 1) for axis in "xyz")
+
+
+# (finding, what, reproducer's value, audit's value, tolerance, relative?)
+# Orders: both fit log2 of error ratios in the asymptotic range; 0.05 is half the band a
+# decisive fit may spread. Inertias: the same library function, printed to 6 digits: 1e-5.
+# Errors and ratios of identical setups: the same arithmetic up to summation order, 1e-3
+# relative; the stall of CASH: 5 % (the audit's runs go to 2^16 steps, the reproducer's to
+# 2^14, both on the plateau at 4.9e-11).
+CHECKS = [
+    ("mujoco-rk4", "RK4's order in the orientation (free symmetric top)",
+     lambda: repro("mujoco_rk4_orientation", "rk4_axis_order"),
+     lambda: class_fit("mujoco::RK4", "free_symmetric_top", "orientation"), 0.05, False),
+    ("mujoco-rk4", "the dexp-corrected RK4's order in the orientation",
+     lambda: repro("mujoco_rk4_orientation", "rk4_dexp_corrected_axis_order"),
+     lambda: class_fit("mujoco::RK4/dexp_corrected", "free_symmetric_top", "orientation"), 0.05, False),
+    ("simbody-feldberg", "RungeKuttaFeldberg's global order (pendulum)",
+     lambda: repro("simbody_orders", "RungeKuttaFeldberg_global_order"),
+     lambda: class_fit("simbody::RungeKuttaFeldberg", "pendulum_small", "joint coordinates"), 0.05, False),
+    ("simbody-verlet", "Verlet's global order (pendulum)",
+     lambda: repro("simbody_orders", "Verlet_global_order"),
+     lambda: class_fit("simbody::Verlet", "pendulum_small", "joint coordinates"), 0.05, False),
+    ("bullet-inertia", "capsule: largest relative error of the moments",
+     lambda: largest_axis_error("bullet_inertia", "capsule"), lambda: shape_error("bullet", "capsule"), 1e-5, False),
+    ("bullet-inertia", "cone: largest relative error of the moments",
+     lambda: largest_axis_error("bullet_inertia", "cone"), lambda: shape_error("bullet", "cone"), 1e-5, False),
+    ("bullet-inertia", "two spheres: largest relative error of the moments",
+     lambda: largest_axis_error("bullet_inertia", "two_spheres"), lambda: shape_error("bullet", "two_spheres"), 1e-5, False),
+    ("ode-quickstep", "QuickStep (20 iterations): the anchor after one step",
+     lambda: repro("ode_quickstep_hinge", "quickstep_20_anchor_after_one_step"),
+     lambda: engine_scenario("ode::quickstep", "pendulum_small")["constraint_first_step"]["position"], 1e-3, True),
+    ("ode-quickstep", "QuickStep (160 iterations): the anchor after one step",
+     lambda: repro("ode_quickstep_hinge", "quickstep_160_anchor_after_one_step"),
+     lambda: engine_scenario("ode::quickstep/iterations_160", "pendulum_small")["constraint_first_step"]["position"], 1e-3, True),
+    ("arkode-cash", "CASH_5_2_4's error plateau on the oscillator",
+     lambda: repro("arkode_cash_weights", "cash_5_2_4_error_n4096"),
+     lambda: problem("double/audit.json", "arkode::ARKODE_CASH_5_2_4", "double", "oscillator")["global_order"]["stall"]["error"], 0.05, True),
+    ("gsl-rk2", "rk2's propagated order",
+     lambda: repro("gsl_step_order", "rk2_propagated_order"),
+     lambda: problem("double/audit.json", "gsl::rk2", "double", "oscillator")["global_order"]["fit"]["value"], 0.05, False),
+    ("gsl-rk2", "rk2's embedded order",
+     lambda: repro("gsl_step_order", "rk2_embedded_order"),
+     lambda: problem("double/audit.json", "gsl::rk2/embedding", "double", "oscillator")["global_order"]["fit"]["value"], 0.05, False),
+    ("gsl-rk2", "rk2's declared order",
+     lambda: repro("gsl_step_order", "rk2_step_order"),
+     lambda: stepper("double/audit.json", "gsl::rk2", "double")["declared"]["order"], 0, False),
+    ("odeint-velocity-verlet", "velocity_verlet's order_value",
+     lambda: repro("odeint_orders", "velocity_verlet_order_value"),
+     lambda: stepper("double/audit.json", "odeint::velocity_verlet", "double")["declared"]["order"], 0, False),
+    ("odeint-velocity-verlet", "velocity_verlet's global order",
+     lambda: repro("odeint_orders", "velocity_verlet_global_order"),
+     lambda: problem("double/audit.json", "odeint::velocity_verlet", "double", "oscillator")["global_order"]["fit"]["value"], 0.05, False),
+    ("odeint-sb3a", "SB3A's one-step order beyond double",
+     lambda: repro("odeint_orders", "sb3a_local_order_cpp_bin_float_50"),
+     lambda: problem("mpfr50/audit.json", "odeint::symplectic_rkn_sb3a_mclachlan", "mpfr50", "oscillator")["local_order"]["fit"]["value"], 0.05, False),
+    ("drivers-horizon", "rk8pd: error/tol after one period",
+     lambda: repro("gsl_driver_horizon", "rk8pd_error_over_tol_after_1_periods"),
+     lambda: horizon("gsl::driver_rk8pd", 1), 1e-3, True),
+    ("drivers-horizon", "rk8pd: error/tol after 64 periods",
+     lambda: repro("gsl_driver_horizon", "rk8pd_error_over_tol_after_64_periods"),
+     lambda: horizon("gsl::driver_rk8pd", 64), 1e-3, True),
+]
+
+failed = skipped = 0
+for finding, what, ours, theirs, tolerance, relative in CHECKS:
+    try:
+        a = ours()
+    except FileNotFoundError as e:
+        # A library not found at configure time has no reproducer (and no audit): skipped.
+        print(f"skipped   {finding:24s} {what}: {e}")
+        skipped += 1
+        continue
+    except KeyError as e:
+        print(f"MISSING   {finding:24s} {what}: {e}")
+        failed += 1
+        continue
+    try:
+        b = theirs()
+    except (KeyError, OSError) as e:
+        print(f"MISSING   {finding:24s} {what}: {e}")
+        failed += 1
+        continue
+    diff = abs(a - b) / (abs(b) if relative and b != 0 else 1)
+    ok = math.isfinite(a) and math.isfinite(b) and diff <= tolerance
+    failed += 0 if ok else 1
+    print(f"{'agrees   ' if ok else 'DISAGREES'} {finding:24s} {what}: reproducer {a:.6g}, audit {b:.6g} "
+          f"({'relative ' if relative else ''}difference {diff:.2g}, tolerance {tolerance:g})")
+print(f"agreement: {len(CHECKS) - failed - skipped} of {len(CHECKS)} pairs within their tolerance, "
+      f"{failed} not, {skipped} skipped (library not found)")
+sys.exit(1 if failed else 0)
