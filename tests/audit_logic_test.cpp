@@ -12,7 +12,11 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "mechcheck/audit/audit.hpp"
+#include "mechcheck/audit/finite_differences.hpp"
+#include "mechcheck/audit/report.hpp"
 #include "mechcheck/audit/builtin.hpp"
 #include "mechcheck/audit/odeint.hpp"
 
@@ -662,5 +666,188 @@ void PrintTo(const property_row& r, std::ostream* os) { *os << r.name; }
 
 INSTANTIATE_TEST_SUITE_P(audit, property_table, ::testing::ValuesIn(property_rows),
                          [](const auto& info) { return std::string(info.param.name); });
+
+
+// --- the precision given, energy claims, stalls, failed runs, resolutions, the report ------
+
+/// A global study in a tier of epsilon 1e-49 whose runs converge at order 4 to a limit
+/// `plateau` away (coefficients right to `plateau`): e = C h^4 + plateau.
+audit::problem_audit plateau_study(double plateau) {
+  synthetic s;
+  s.eps = 1e-49;
+  s.max_steps = 1 << 14;
+  s.error = [=](double h) { return 1e-2 * std::pow(h, 4) + plateau; };
+  s.change = [=](double h) { return 15e-2 * std::pow(h, 4); };
+  audit::problem_audit p;
+  p.problem = "synthetic";
+  p.global = s.run();
+  return p;
+}
+
+TEST(audit_verdicts, a_claim_held_to_the_precision_its_coefficients_are_given_to) {
+  // Coefficients stored in double (2^-53) seen in a 50-digit tier: the runs stop at 1e-16.
+  // At the tier's floors a stall (contradicted); at the floors of a tier of epsilon 2^-53
+  // order 4 holds: "to the precision given". Declared exact (no precision), contradicted.
+  const audit::problem_audit p = plateau_study(1e-16);
+  ASSERT_TRUE(p.global.stalled);
+  audit::claims c;
+  c.order = 4;
+  EXPECT_EQ(audit::judge_order(c, {p}, 1e-49).result, outcome::contradicted);
+  c.coefficient_precision = 0x1p-53;
+  c.coefficient_words = "double";
+  const audit::verdict v = audit::judge_order(c, {p}, 1e-49);
+  EXPECT_EQ(v.result, outcome::to_precision_given) << v.evidence;
+  EXPECT_EQ(v.measured, "4.00") << v.evidence;
+  EXPECT_NE(v.evidence.find("at the tier's own floors (CONTRADICTED)"), std::string::npos) << v.evidence;
+  // A plateau far above that precision (1e-10 against 2^-53) stays contradicted: the
+  // coefficients are wrong beyond the precision they claim.
+  EXPECT_EQ(audit::judge_order(c, {plateau_study(1e-10)}, 1e-49).result, outcome::contradicted);
+  // A precision finer than the tier's is not a reason: double coefficients in double.
+  EXPECT_EQ(audit::judge_order(c, {plateau_study(1e-16)}, 0x1p-52).result, audit::judge_order(audit::claims{4}, {plateau_study(1e-16)}, 0x1p-52).result);
+}
+
+/// A problem whose long run's energy error has `kind`, `max` and budget 1e-13.
+audit::problem_audit energy_run(const std::string& kind, double max, std::optional<double> exponent = {}) {
+  audit::problem_audit p;
+  p.problem = "synthetic";
+  audit::long_run run;
+  run.steps = 100000;
+  audit::drift d;
+  d.name = "energy";
+  d.kind = kind;
+  d.max_relative = max;
+  d.budget_relative = 1e-13;
+  d.preserved = kind == "preserved to rounding";
+  d.exponent = exponent;
+  run.invariants.push_back(d);
+  p.run = run;
+  return p;
+}
+
+TEST(audit_verdicts, a_declared_energy_behaviour_against_the_growth_class) {
+  const auto judge = [](std::optional<audit::energy_behaviour> declared, const audit::problem_audit& p) {
+    audit::claims c;
+    c.energy = declared;
+    return audit::judge_energy(c, {p}).result;
+  };
+  using audit::energy_behaviour;
+  const auto bounded = energy_behaviour::bounded, drift = energy_behaviour::drift;
+  EXPECT_EQ(judge(bounded, energy_run("bounded", 1e-6, 0.01)), outcome::confirmed);
+  EXPECT_EQ(judge(bounded, energy_run("preserved to rounding", 1e-14)), outcome::confirmed);
+  // A random walk within 100 rounding budgets is Brouwer's law, not the method; above, the
+  // study cannot tell.
+  EXPECT_EQ(judge(bounded, energy_run("random walk", 99e-13, 0.5)), outcome::confirmed);
+  EXPECT_EQ(judge(bounded, energy_run("random walk", 101e-13, 0.5)), outcome::not_resolvable);
+  EXPECT_EQ(judge(bounded, energy_run("linear drift", 1e-6, 1.0)), outcome::contradicted);
+  EXPECT_EQ(judge(bounded, energy_run("lost (error of order one)", 0.5)), outcome::contradicted);
+  EXPECT_EQ(judge(drift, energy_run("linear drift", 1e-6, 1.0)), outcome::confirmed);
+  EXPECT_EQ(judge(drift, energy_run("bounded", 1e-6, 0.0)), outcome::exceeds);
+  EXPECT_EQ(judge(std::nullopt, energy_run("bounded", 1e-6, 0.0)), outcome::not_declared);
+  EXPECT_EQ(judge(bounded, audit::problem_audit{}), outcome::not_measured);
+}
+
+TEST(audit_studies, runs_that_agree_exactly_while_the_error_stays_are_a_stall) {
+  // Change 0: two runs landed on the same state, away from the solution.
+  audit::order_study study;
+  study.points = {{1.0 / 4, 0.3, 4, -1}, {1.0 / 8, 0.02, 8, 0.3}, {1.0 / 16, 1e-3, 16, 0.02}, {1.0 / 32, 1e-3, 32, 0}};
+  audit::fit_global(study, 0x1p-52);
+  ASSERT_TRUE(study.stalled);
+  EXPECT_EQ(study.stalled->change, 0);
+}
+
+TEST(audit_studies, a_run_after_a_failed_one_is_not_compared_with_the_one_before) {
+  // A stepper that throws at n = 16 steps: the run of 32 has no previous run to differ
+  // from (its change unknown, -1), never the distance to the run of 8.
+  audit::stepper_under_audit<double> s;
+  s.name = "flaky";
+  s.declared.order = 2;
+  s.make = [](const audit::erased_system<double>& sys) -> audit::step_function<double> {
+    return [sys](audit::state<double>& x, const double& h) {
+      if (std::abs(h - 2 * 3.141592653589793 / 16) < 1e-12) throw convergence_error("flaky: the solve did not converge");
+      stormer_verlet<audit::erased_system<double>, dynamic_vector<double>>{sys}(x, h);
+    };
+  };
+  audit::audit_options opt;
+  opt.problems = {"oscillator"};
+  opt.long_run_steps = 0;
+  opt.timing = false;
+  const auto a = audit::audit_stepper(s, opt);
+  const auto& pts = a.problems[0].global.points;
+  ASSERT_GE(pts.size(), 3u);
+  EXPECT_NE(a.problems[0].global.note.find("did not converge"), std::string::npos) << a.problems[0].global.note;
+  // The oscillator's study runs n = 4, 8, [16 failed], 32, ...: the point after the gap.
+  bool seen_gap = false;
+  for (std::size_t i = 1; i < pts.size(); ++i)
+    if (pts[i].h < pts[i - 1].h / 3) {
+      seen_gap = true;
+      EXPECT_EQ(pts[i].change, -1) << "h = " << pts[i].h;
+    }
+  EXPECT_TRUE(seen_gap);
+}
+
+TEST(audit_resolution, the_determinant_of_a_2x2_map_resolves_to_its_cofactors_times_the_errors) {
+  Eigen::Matrix2d m, e;
+  m << 2, 30, 500, 7000;
+  e << 1e-1, 1e-2, 1e-3, 1e-4;
+  // |m11| e00 + |m00| e11 + |m10| e01 + |m01| e10
+  EXPECT_DOUBLE_EQ(audit::determinant_resolution(m, e), 7000 * 1e-1 + 2 * 1e-4 + 500 * 1e-2 + 30 * 1e-3);
+  // Against the determinant of every perturbed matrix within the errors: never exceeded
+  // to first order.
+  for (int k = 0; k < 16; ++k) {
+    Eigen::Matrix2d d;
+    d << (k & 1 ? 1 : -1) * e(0, 0), (k & 2 ? 1 : -1) * e(0, 1), (k & 4 ? 1 : -1) * e(1, 0), (k & 8 ? 1 : -1) * e(1, 1);
+    const double change = std::abs((m + d).determinant() - m.determinant());
+    EXPECT_LE(change, audit::determinant_resolution(m, e) + std::abs(d.determinant()) + 1e-9);
+  }
+}
+
+TEST(audit_report, the_json_report_reads_back_what_the_audit_holds) {
+  audit::audit_options opt;
+  opt.problems = {"oscillator", "free_top"};
+  opt.long_run_problems = {"oscillator"};
+  opt.long_run_steps = 2048;
+  opt.timing = false;
+  const auto a = audit::audit_stepper(audit::method<stormer_verlet, double>("verlet"), opt);
+  const auto j = nlohmann::json::parse(audit::to_json({a}))["audits"][0];
+  EXPECT_EQ(j["stepper"], a.stepper);
+  EXPECT_EQ(j["tier"], a.tier);
+  EXPECT_EQ(j["declared"]["order"], *a.declared.order);
+  EXPECT_EQ(j["declared"]["energy"], "bounded");
+  EXPECT_EQ(j["structure"]["separable"], a.structure.separable);
+  EXPECT_EQ(j["claims_hold"], a.claims_hold());
+  ASSERT_EQ(j["verdicts"].size(), a.verdicts.size());
+  for (std::size_t i = 0; i < a.verdicts.size(); ++i) {
+    EXPECT_EQ(j["verdicts"][i]["claim"], a.verdicts[i].claim);
+    EXPECT_EQ(j["verdicts"][i]["result"], audit::outcome_name(a.verdicts[i].result));
+    EXPECT_EQ(j["verdicts"][i]["measured"], a.verdicts[i].measured);
+    EXPECT_EQ(j["verdicts"][i]["declared"], a.verdicts[i].declared);
+  }
+  ASSERT_EQ(j["problems"].size(), a.problems.size());
+  for (std::size_t k = 0; k < a.problems.size(); ++k) {
+    const auto& p = a.problems[k];
+    const auto& jp = j["problems"][k];
+    EXPECT_EQ(jp["problem"], p.problem);
+    if (!p.skipped.empty()) {
+      EXPECT_EQ(jp["skipped"], p.skipped);
+      continue;
+    }
+    EXPECT_EQ(jp["global_order"]["fit"]["value"].get<double>(), p.global.fit.value);
+    EXPECT_EQ(jp["global_order"]["fit"]["used"].get<int>(), p.global.fit.used);
+    EXPECT_EQ(jp["local_order"]["fit"]["value"].get<double>(), p.local.fit.value);
+    ASSERT_EQ(jp["global_order"]["points"].size(), p.global.points.size());
+    for (std::size_t i = 0; i < p.global.points.size(); ++i) {
+      EXPECT_EQ(jp["global_order"]["points"][i][0].get<double>(), p.global.points[i].h);
+      EXPECT_EQ(jp["global_order"]["points"][i][1].get<double>(), p.global.points[i].error);
+    }
+    if (p.symplectic) EXPECT_EQ(jp["symplectic_condition"]["worst_eps"].get<double>(), p.symplectic->worst_eps);
+    if (p.symmetric) EXPECT_EQ(jp["time_symmetry"]["worst_eps"].get<double>(), p.symmetric->worst_eps);
+    if (p.run) {
+      EXPECT_EQ(jp["long_run"]["steps"].get<long long>(), p.run->steps);
+      ASSERT_EQ(jp["long_run"]["invariants"].size(), p.run->invariants.size());
+      EXPECT_EQ(jp["long_run"]["invariants"][0]["max_relative"].get<double>(), p.run->invariants[0].max_relative);
+      EXPECT_EQ(jp["long_run"]["invariants"][0]["kind"], p.run->invariants[0].kind);
+    }
+  }
+}
 
 }  // namespace audit_logic

@@ -332,6 +332,51 @@ TEST(tableau_file, a_singular_implicit_block_is_accepted_and_its_stepper_runs) {
   EXPECT_EQ(report.find("order")->result, outcome::confirmed) << report.find("order")->evidence;
 }
 
+TEST(tableau_audit, classifies_explicit_diagonally_implicit_and_implicit_by_the_diagonal_and_above) {
+  // Explicit: zero on and above the diagonal; diagonally implicit: zero above it; a single
+  // nonzero on the diagonal is implicit already (Backward Euler), one above it fully so.
+  const auto of = [](std::vector<std::vector<double>> a) {
+    butcher_tableau<double> t{a, std::vector<double>(a.size(), 1.0 / double(a.size())), std::vector<double>(a.size(), 0)};
+    return std::pair{t.is_explicit(), t.is_diagonally_implicit()};
+  };
+  EXPECT_EQ(of({{0, 0}, {1, 0}}), (std::pair{true, true}));
+  EXPECT_EQ(of({{0, 0}, {1, 0.5}}), (std::pair{false, true}));
+  EXPECT_EQ(of({{1}}), (std::pair{false, true}));
+  EXPECT_EQ(of({{0, 0.5}, {0, 0}}), (std::pair{false, false}));
+  EXPECT_EQ(of({{0.25, -0.1}, {0.6, 0.25}}), (std::pair{false, false}));
+  const auto a = audit::analyse(audit::read_tableau(dir / "sdirk3.json"));
+  EXPECT_EQ(a.kind, "diagonally implicit");
+  EXPECT_EQ(audit::analyse(audit::read_tableau(dir / "gauss2.json")).kind, "implicit");
+  EXPECT_EQ(audit::analyse(audit::read_tableau(dir / "rk4.json")).kind, "explicit");
+}
+
+TEST(tableau_file, short_decimals_are_exact_and_a_long_one_sets_the_precision) {
+  const fs::path file = fs::temp_directory_path() / "mechcheck_decimals.json";
+  // Heun's method in decimals: 0.5 and 1.0 are exact.
+  std::ofstream(file) << R"({"A": [["0","0"],["1.0","0"]], "b": ["0.5","0.5"], "c": ["0","1"], "order": 2})";
+  auto t = audit::read_tableau(file);
+  EXPECT_EQ(t.digits, 0);
+  EXPECT_EQ(audit::analyse(t).find("order")->result, outcome::confirmed);
+  // The midpoint rule with b written to 7 digits, "0.0000001" and "0.9999999": order 2
+  // fails by 5e-8, within the rounding of 7 digits (64 x 5e-7); "0.0001000" and
+  // "0.9999000" (7 digits too) fail it by 5e-5, beyond.
+  std::ofstream(file) << R"({"A": [["0","0"],["0.5","0"]], "b": ["0.0000001","0.9999999"], "c": ["0","0.5"], "order": 2})";
+  t = audit::read_tableau(file);
+  EXPECT_EQ(t.digits, 7);
+  auto a = audit::analyse(t);
+  EXPECT_EQ(a.find("order")->result, outcome::to_precision_given) << audit::describe(a);
+  std::ofstream(file) << R"({"A": [["0","0"],["0.5","0"]], "b": ["0.0001000","0.9999000"], "c": ["0","0.5"], "order": 2})";
+  t = audit::read_tableau(file);
+  EXPECT_EQ(t.digits, 7);
+  a = audit::analyse(t);
+  EXPECT_EQ(a.find("order")->result, outcome::contradicted) << audit::describe(a);
+  EXPECT_EQ(audit::read_coefficient("0.2500", "x").digits, 0);   // four digits: short
+  EXPECT_EQ(audit::read_coefficient("0.25001", "x").digits, 5);
+  EXPECT_EQ(audit::read_coefficient("-1.5e-3", "x").digits, 0);
+  EXPECT_EQ(audit::read_coefficient("1/3", "x").digits, 0);
+  EXPECT_EQ(audit::read_coefficient("0.000123456", "x").digits, 6);  // leading zeros are not digits
+}
+
 TEST(tableau_file, coefficients_are_read_without_double) {
   // 1/3 as a rational and as a 40-digit decimal: both exact to mpfr100 (far beyond double).
   const mpfr100 third = audit::parse_coefficient("1/3", "x");

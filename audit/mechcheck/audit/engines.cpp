@@ -529,9 +529,7 @@ void jacobian_of(const engine_integrator& in, const scenario& s, engine_scenario
     const fd_jacobian<double> j = finite_difference_jacobian<double>(map, z, 64);
     const Eigen::Matrix2d m = j.value, err = j.error;
     a.det_minus_one = m.determinant() - 1;
-    // |d det| <= sum over entries of |cofactor| * error.
-    a.det_resolution = std::abs(m(1, 1)) * err(0, 0) + std::abs(m(0, 0)) * err(1, 1) +
-                       std::abs(m(1, 0)) * err(0, 1) + std::abs(m(0, 1)) * err(1, 0);
+    a.det_resolution = determinant_resolution(m, err);
   } catch (const scenario_refused&) {
     throw;
   } catch (const std::exception& ex) {

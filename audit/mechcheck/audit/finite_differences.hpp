@@ -74,4 +74,14 @@ fd_jacobian<T> finite_difference_jacobian(
   return out;
 }
 
+/// The resolution of det M for a 2 x 2 matrix whose entries carry errors E: det is linear
+/// in each entry with its cofactor as coefficient, so |d det| <= |m11| e00 + |m00| e11 +
+/// |m10| e01 + |m01| e10 to first order in E.
+template <class Matrix>
+double determinant_resolution(const Matrix& m, const Matrix& e) {
+  using std::abs;
+  return static_cast<double>(abs(m(1, 1)) * e(0, 0) + abs(m(0, 0)) * e(1, 1) + abs(m(1, 0)) * e(0, 1) +
+                             abs(m(0, 1)) * e(1, 0));
+}
+
 }  // namespace mechcheck::audit

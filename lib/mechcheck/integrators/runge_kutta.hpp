@@ -31,9 +31,11 @@ struct butcher_tableau {
   std::vector<R> b, c;
 
   int stages() const { return static_cast<int>(b.size()); }
+  /// True when a_ij = 0 on and above the diagonal (every stage from the ones before).
   bool is_explicit() const {
     for (int i = 0; i < stages(); ++i)
-      if (a[std::size_t(i)][std::size_t(i)] != 0) return false;
+      for (int j = i; j < stages(); ++j)
+        if (a[std::size_t(i)][std::size_t(j)] != 0) return false;
     return true;
   }
   /// The tableau with every coefficient converted to R2 (exact from double into a wider
