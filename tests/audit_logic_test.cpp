@@ -702,6 +702,16 @@ TEST(audit_verdicts, a_claim_held_to_the_precision_its_coefficients_are_given_to
   // A plateau far above that precision (1e-10 against 2^-53) stays contradicted: the
   // coefficients are wrong beyond the precision they claim.
   EXPECT_EQ(audit::judge_order(c, {plateau_study(1e-10)}, 1e-49).result, outcome::contradicted);
+  // So does a table whose order conditions fail beyond the precision given, whatever its
+  // studies show at the coarser floors (a weight typed to 12 digits: order 0 there).
+  audit::claims typed = c;
+  typed.algebraic_order = 0;
+  typed.algebraic_words = "not consistent (sum b_i - 1 = 7.8e-12)";
+  const audit::verdict w = audit::judge_order(typed, {p}, 1e-49);
+  EXPECT_EQ(w.result, outcome::contradicted);
+  EXPECT_NE(w.evidence.find("sum b_i - 1 = 7.8e-12"), std::string::npos) << w.evidence;
+  typed.algebraic_order = 4;  // the conditions hold to the precision given
+  EXPECT_EQ(audit::judge_order(typed, {p}, 1e-49).result, outcome::to_precision_given);
   // A precision finer than the tier's is not a reason: double coefficients in double.
   EXPECT_EQ(audit::judge_order(c, {plateau_study(1e-16)}, 0x1p-52).result, audit::judge_order(audit::claims{4}, {plateau_study(1e-16)}, 0x1p-52).result);
 }

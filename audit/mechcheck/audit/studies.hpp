@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -120,15 +121,20 @@ inline std::vector<study_point> convergent_points(const std::vector<study_point>
 /// previous run, which is below 1/10. The study computes it with its tier's epsilon; the
 /// verdicts refit with a coarser one to judge a claim at the precision a method's
 /// coefficients are given to.
-inline void fit_global(order_study& study, double eps) {
+///
+/// `evaluations_cap` bounds the evaluations counted in the floor: a rounding per evaluation
+/// accumulates as a random walk, while coefficients given to a precision delta err once, by
+/// a fixed amount -- their floor is that of one evaluation (cap 1).
+inline void fit_global(order_study& study, double eps,
+                       double evaluations_cap = std::numeric_limits<double>::infinity()) {
   double resolvable = 0;
   for (const auto& p : study.points)
-    resolvable = std::max(resolvable, floor_margin * rounding_floor(eps, p.evaluations));
+    resolvable = std::max(resolvable, floor_margin * rounding_floor(eps, std::min(p.evaluations, evaluations_cap)));
   study.fit = fit_halvings(convergent_points(study.points), resolvable);
   study.stalled.reset();
   if (study.points.empty()) return;
   const study_point& last = study.points.back();
-  const double floor = rounding_floor(eps, last.evaluations);
+  const double floor = rounding_floor(eps, std::min(last.evaluations, evaluations_cap));
   // The runs agree (their change below 1/10) while the error stays: a wrong limit,
   // however far (a limit at distance 1 is a stall too, not an unresolved study).
   if (last.change >= 0 && last.change < 0.1 && last.error >= floor_margin * floor &&
@@ -144,10 +150,12 @@ inline double local_floor(double eps, double evaluations) {
 }
 
 /// The fit of a local (one-step) study from its points with the floors of a tier of
-/// epsilon eps (see fit_global).
-inline void fit_local(order_study& study, double eps) {
+/// epsilon eps (see fit_global, also for the cap).
+inline void fit_local(order_study& study, double eps,
+                      double evaluations_cap = std::numeric_limits<double>::infinity()) {
   double resolvable = 0;
-  for (const auto& p : study.points) resolvable = std::max(resolvable, 16 * local_floor(eps, p.evaluations));
+  for (const auto& p : study.points)
+    resolvable = std::max(resolvable, 16 * local_floor(eps, std::min(p.evaluations, evaluations_cap)));
   study.fit = fit_halvings(convergent_points(study.points), resolvable);
 }
 

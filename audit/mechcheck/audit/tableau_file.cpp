@@ -158,6 +158,8 @@ tableau_file read_tableau(const std::filesystem::path& path) {
     } else {
       fail(file, "precision = " + p.dump().substr(0, 80) + " is neither \"exact\" nor a number of digits 1..100");
     }
+  } else if (digits >= 100) {
+    t.precision_words = std::to_string(digits) + " significant digits, its longest decimal: exact to mpfr100";
   } else if (digits > 0) {
     t.precision_words = std::to_string(digits) + " significant digits, its longest decimal";
   } else {

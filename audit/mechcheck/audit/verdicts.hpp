@@ -24,8 +24,10 @@
 ///   - confirmed when a settled global fit reaches p - 0.25 (a problem may show more:
 ///     symplectic Euler is of order 2 on the oscillator);
 ///   - not resolvable otherwise, with what the study would need.
-/// A claim that fails at the tier's floors but holds at the floors of a tier whose epsilon
-/// is the coefficients' declared precision is "to the precision given".
+/// A claim that fails at the tier's floors but holds at the floors of one error of the size
+/// of the coefficients' declared precision (a tier of that epsilon, one evaluation: a
+/// coefficient errs once, not once an evaluation) is "to the precision given" -- unless the
+/// order conditions of a tableau fail beyond that precision.
 
 #include <algorithm>
 #include <cmath>
@@ -88,6 +90,9 @@ struct order_assessment {
   std::string evidence;
   int fewest_halvings_to_floor = 99;      ///< not-decisive fits that ended at the floor
   std::string floor_problems;
+  /// Problems whose error sat at the rounding floor from the coarsest runs on (no halving
+  /// above it): integrated to rounding, they say nothing of the order.
+  std::string exact_problems;
 };
 
 inline order_assessment assess_order(const std::vector<problem_audit>& ps, double g, double l,
@@ -120,6 +125,8 @@ inline order_assessment assess_order(const std::vector<problem_audit>& ps, doubl
       }
     } else {
       ev += "global not resolved";
+      if (gf.floor_h && !pa.global.points.empty() && pa.global.points.size() <= 2)
+        a.exact_problems += (a.exact_problems.empty() ? "" : ", ") + pa.problem;
     }
     if (pa.global.stalled) {
       const stall& st = *pa.global.stalled;
@@ -235,7 +242,10 @@ inline verdict judge_order_as_fitted(const claims& c, const std::vector<problem_
     return v;
   }
   v.result = outcome::not_resolvable;
-  if (a.fewest_halvings_to_floor < 3) {
+  if (!a.exact_problems.empty() && a.settled_global.empty() && a.fewest_halvings_to_floor == 99) {
+    v.needs = "a problem the method does not integrate to rounding: on " + a.exact_problems +
+              " the error is at the rounding floor from the coarsest runs";
+  } else if (a.fewest_halvings_to_floor < 3) {
     v.needs = "a decisive fit needs three halvings above the rounding floor; on " + a.floor_problems +
               " the floor came after " + std::to_string(a.fewest_halvings_to_floor) +
               (eps > 1e-20 ? ": a tier with a lower floor (-t mpfr50)" : ": a longer study");
@@ -254,11 +264,20 @@ inline verdict judge_order(const claims& c, const std::vector<problem_audit>& ps
   const bool failed = v.result == verdict::outcome::contradicted ||
                       v.result == verdict::outcome::not_resolvable;
   if (!failed || !c.coefficient_precision || !(*c.coefficient_precision > 16 * eps)) return v;
+  // Where there is a tableau, its order conditions decide whether the coefficients hold the
+  // order to the precision they are given to: failing beyond it (a coefficient typed to 12
+  // digits in a table stored in double), the contradiction stands, whatever the floors.
+  if (c.algebraic_order && c.order && *c.algebraic_order < *c.order) {
+    v.evidence += "the order conditions of its coefficients: " + c.algebraic_words;
+    return v;
+  }
   const double coarse = *c.coefficient_precision;
   std::vector<problem_audit> refitted = ps;
+  // Coefficients off by up to `coarse` err once, by a fixed amount, not once an
+  // evaluation: the floors of one evaluation in a tier of that epsilon.
   for (auto& pa : refitted) {
-    fit_global(pa.global, coarse);
-    fit_local(pa.local, coarse);
+    fit_global(pa.global, coarse, 1);
+    fit_local(pa.local, coarse, 1);
   }
   claims plain = c;
   plain.coefficient_precision.reset();
@@ -268,7 +287,8 @@ inline verdict judge_order(const claims& c, const std::vector<problem_audit>& ps
   out.result = verdict::outcome::to_precision_given;
   out.evidence = "coefficients given to " + detail::sci(coarse) +
                  (c.coefficient_words.empty() ? "" : " (" + c.coefficient_words + ")") +
-                 "; at the floors of a tier of that epsilon: " + at_precision.evidence +
+                 (c.algebraic_words.empty() ? "" : "; their order conditions: " + c.algebraic_words) +
+                 "; at the floors of one error of that size: " + at_precision.evidence +
                  "at the tier's own floors (" + outcome_text(v.result) + "): " + v.evidence;
   return out;
 }
