@@ -712,6 +712,23 @@ TEST(audit_verdicts, a_claim_held_to_the_precision_its_coefficients_are_given_to
   EXPECT_NE(w.evidence.find("sum b_i - 1 = 7.8e-12"), std::string::npos) << w.evidence;
   typed.algebraic_order = 4;  // the conditions hold to the precision given
   EXPECT_EQ(audit::judge_order(typed, {p}, 1e-49).result, outcome::to_precision_given);
+  // Ten digits (5e-10) in double: the plateau at 3e-10 leaves too little range above the
+  // floors of that precision to resolve order 4. With a tableau whose conditions hold to
+  // ten digits the algebra decides; without one, not resolvable -- never contradicted.
+  synthetic ten;
+  ten.error = [](double h) { return 1e-4 * std::pow(h, 4) + 3e-10; };
+  ten.change = [](double h) { return 15e-4 * std::pow(h, 4); };
+  audit::problem_audit q;
+  q.global = ten.run();
+  ASSERT_TRUE(q.global.stalled);
+  audit::claims digits;
+  digits.order = 4;
+  digits.coefficient_precision = 5e-10;
+  EXPECT_EQ(audit::judge_order(digits, {q}, 0x1p-52).result, outcome::not_resolvable);
+  digits.algebraic_order = 4;
+  EXPECT_EQ(audit::judge_order(digits, {q}, 0x1p-52).result, outcome::to_precision_given);
+  digits.coefficient_precision.reset();
+  EXPECT_EQ(audit::judge_order(digits, {q}, 0x1p-52).result, outcome::contradicted);
   // A precision finer than the tier's is not a reason: double coefficients in double.
   EXPECT_EQ(audit::judge_order(c, {plateau_study(1e-16)}, 0x1p-52).result, audit::judge_order(audit::claims{4}, {plateau_study(1e-16)}, 0x1p-52).result);
 }

@@ -63,9 +63,11 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   std::vector<std::string> tableau_files;
   app.add_option("--tableau", tableau_files,
-                 "a Butcher tableau in JSON (tableaus/*.json shows the format): its order "
-                 "conditions up to order 10 in mpfr100, then its stepper audited as "
-                 "tableau::<name>; with no --stepper only the tableaus are audited")
+                 "a Butcher tableau in JSON (docs/tableau-format.md; 12 classical ones in the "
+                 "source's tableaus/ and the installed share/mechcheck/tableaus/): its order "
+                 "conditions up to order 10 in mpfr100 at the precision its coefficients are given "
+                 "to, then its stepper audited as tableau::<name>; with no --stepper only the "
+                 "tableaus are audited")
       ->check(CLI::ExistingFile);
   std::vector<std::string> driver_patterns;
   app.add_option("--driver", driver_patterns,

@@ -282,8 +282,22 @@ inline verdict judge_order(const claims& c, const std::vector<problem_audit>& ps
   claims plain = c;
   plain.coefficient_precision.reset();
   const verdict at_precision = detail::judge_order_as_fitted(plain, refitted, coarse);
-  if (at_precision.result != verdict::outcome::confirmed) return v;
+  // Confirmed at those floors: to the precision given. Not resolvable there: where the
+  // order conditions hold to that precision they decide (the studies have too little range
+  // above an error of that size to show the order); without a tableau, the study cannot
+  // tell. Contradicted there: the contradiction stands.
+  if (at_precision.result == verdict::outcome::contradicted) return v;
+  const bool unresolved = at_precision.result != verdict::outcome::confirmed;  // no fit, or none settled
+  if (unresolved && !c.algebraic_order) {
+    verdict out = v;
+    out.result = verdict::outcome::not_resolvable;
+    out.needs = "the failure lies within the coefficients' precision (" + detail::sci(coarse) +
+                "); above errors of that size " +
+                (at_precision.needs.empty() ? std::string("no halving is resolved: coarser runs") : at_precision.needs);
+    return out;
+  }
   verdict out = at_precision;
+  out.needs.clear();
   out.result = verdict::outcome::to_precision_given;
   out.evidence = "coefficients given to " + detail::sci(coarse) +
                  (c.coefficient_words.empty() ? "" : " (" + c.coefficient_words + ")") +
