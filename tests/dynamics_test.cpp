@@ -250,6 +250,27 @@ TYPED_TEST(gauss_tableau, every_tableau_is_symplectic_and_consistent) {
   }
 }
 
+// Order 2s: the quadrature conditions B(2s), sum b_i c_i^(k-1) = 1/k for k <= 2s, and the
+// collocation conditions C(s), sum_j a_ij c_j^(k-1) = c_i^k / k for k <= s, up to the 12
+// stages the tableau offers (10 carry the certified references in mpfr50).
+TYPED_TEST(gauss_tableau, tableaus_up_to_twelve_stages_satisfy_B_2s_and_C_s) {
+  using T = TypeParam;
+  for (int s : {5, 8, 10, 12}) {
+    const gauss_legendre_tableau<T> t(s);
+    for (int k = 1; k <= 2 * s; ++k) {
+      T sum = 0;
+      for (int i = 0; i < s; ++i) sum += t.b[i] * pow(t.c[i], T(k - 1));
+      EXPECT_TRUE(near_eps(sum, T(T(1) / T(k)), 64 * s)) << "s = " << s << ", B(" << k << ")";
+    }
+    for (int i = 0; i < s; ++i)
+      for (int k = 1; k <= s; ++k) {
+        T sum = 0;
+        for (int j = 0; j < s; ++j) sum += t.a[i][j] * pow(t.c[j], T(k - 1));
+        EXPECT_TRUE(near_eps(sum, T(pow(t.c[i], T(k)) / T(k)), 256 * s)) << "s = " << s << ", C(" << k << ") row " << i;
+      }
+  }
+}
+
 TYPED_TEST(gauss_tableau, triple_jump_weights_sum_to_one) {
   using T = TypeParam;
   for (int order : {4, 6, 8}) {

@@ -56,16 +56,23 @@ class erased_system {
   long long evaluations() const { return *counter_; }
   void reset_evaluations() const { *counter_ = 0; }
 
+  /// Evaluates on dynamic vectors of T and ad<T> only (a generic caller can ask).
   template <class Vec>
+  static constexpr bool takes = std::is_same_v<typename Vec::Scalar, T> || std::is_same_v<typename Vec::Scalar, ad<T>>;
+
+  template <class Vec>
+    requires takes<Vec>
   void velocity(const Vec& p, Vec& dq) const {
     table_for<Vec>().velocity(p, dq);
   }
   template <class Vec>
+    requires takes<Vec>
   void force(const Vec& q, Vec& dp) const {
     ++*counter_;
     table_for<Vec>().force(q, dp);
   }
   template <class Vec>
+    requires takes<Vec>
   void vector_field(const Vec& q, const Vec& p, Vec& dq, Vec& dp) const {
     ++*counter_;
     table_for<Vec>().field(q, p, dq, dp);
@@ -73,10 +80,12 @@ class erased_system {
   /// The vector field without counting it (for Jacobians taken by AD for an implicit
   /// black box: those are not the method's evaluations).
   template <class Vec>
+    requires takes<Vec>
   void vector_field_uncounted(const Vec& q, const Vec& p, Vec& dq, Vec& dp) const {
     table_for<Vec>().field(q, p, dq, dp);
   }
   template <class Vec>
+    requires takes<Vec>
   typename Vec::Scalar energy(const Vec& q, const Vec& p) const {
     return table_for<Vec>().energy(q, p);
   }
@@ -158,6 +167,14 @@ struct problem {
   T h_long;     ///< step of the long run
   T scale;      ///< size of the state, for rounding floors
   std::vector<invariant<T>> invariants;  ///< the energy first
+  /// The relative uncertainty of exact(t): empty or 0 for a closed form; 10^-digits for a
+  /// reference certified to that many digits (problems/reference_solution.hpp). The studies
+  /// take it as a floor and resolve nothing within 100 times it.
+  std::function<double(const T&)> exact_uncertainty;
+  std::string source;  ///< where the problem comes from (a paper, its parameters)
+  /// Non-empty: no long run on this problem, and why (close encounters a fixed step does
+  /// not resolve: its energy would say nothing of a method's claim).
+  std::string long_run_refused;
 };
 
 namespace detail {
