@@ -13,6 +13,7 @@
 #include "families.hpp"
 #include "run_family.hpp"
 #include "mechcheck/audit/found.hpp"
+#include "mechcheck/audit/problems/classic.hpp"
 #include "mechcheck/audit/report.hpp"
 #include "mechcheck/audit/tableau_file.hpp"
 
@@ -20,8 +21,27 @@ namespace {
 using namespace mechcheck;
 using clock_type = std::chrono::steady_clock;
 
-const std::vector<std::string> known_problems = {"oscillator", "kepler_e0.5", "kepler_e0.9",
-                                                 "pendulum",   "free_top",    "twist"};
+/// The problems with exact solutions (the default), the classic ones with certified
+/// references (problems/classic.hpp; by name only), and henon_heiles for both its orbits.
+std::vector<std::string> known_problems() {
+  std::vector<std::string> names = {"oscillator", "kepler_e0.5", "kepler_e0.9", "pendulum", "free_top", "twist"};
+  for (const auto& n : audit::classic_problem_names()) names.push_back(n);
+  names.push_back("henon_heiles");
+  return names;
+}
+
+/// henon_heiles names both its orbits.
+std::vector<std::string> expanded(const std::vector<std::string>& names) {
+  std::vector<std::string> out;
+  for (const auto& n : names)
+    if (n == "henon_heiles") {
+      out.push_back("henon_heiles_regular");
+      out.push_back("henon_heiles_chaotic");
+    } else {
+      out.push_back(n);
+    }
+  return out;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -37,12 +57,16 @@ int main(int argc, char** argv) {
   app.add_option("-s,--stepper", steppers,
                  "steppers to audit, as shell patterns on their names "
                  "(e.g. 'mechcheck::*', 'odeint::runge_kutta4'); default all");
-  app.add_option("-p,--problem", problems, "reference problems; default all")
-      ->check(CLI::IsMember(known_problems));
+  app.add_option("-p,--problem", problems,
+                 "problems; default the six with exact solutions. The classic ones without (pleiades, "
+                 "arenstorf, outer_solar_system, henon_heiles_regular, henon_heiles_chaotic or henon_heiles for "
+                 "both, double_pendulum) by name: their references are certified in mpfr50 and cached "
+                 "(MECHCHECK_CACHE_DIR, else ~/.cache/mechcheck)")
+      ->check(CLI::IsMember(known_problems()));
   app.add_option("-t,--tier", tiers, "tiers: double, mpfr50")
       ->check(CLI::IsMember({"double", "mpfr50"}));
   app.add_option("--long-run-problem", long_run_problems, "problems of the long run")
-      ->check(CLI::IsMember(known_problems));
+      ->check(CLI::IsMember(known_problems()));
   app.add_option("--long-run-steps", long_run_steps, "steps of the long run in double (0: none)")
       ->check(CLI::Range(0LL, 100000000LL));
   app.add_option("--long-run-steps-mpfr50", long_run_steps_mpfr50,
@@ -87,6 +111,8 @@ int main(int argc, char** argv) {
   app.add_option("--engine-long-run-steps", engine_long_run_steps, "steps of the engines' long run (0: none)")
       ->check(CLI::Range(0LL, 100000000LL));
   CLI11_PARSE(app, argc, argv);
+  problems = expanded(problems);
+  long_run_problems = expanded(long_run_problems);
 
   const auto start = clock_type::now();
   const auto elapsed = [&] {

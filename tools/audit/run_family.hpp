@@ -5,6 +5,7 @@
 
 #include "families.hpp"
 #include "mechcheck/audit/audit.hpp"
+#include "mechcheck/audit/problems/classic.hpp"
 
 namespace mechcheck::audit_tool {
 
@@ -29,7 +30,13 @@ template <class T>
 family_result run_family(const std::vector<audit::stepper_under_audit<T>>& steppers,
                          const request& r) {
   family_result out;
-  const auto problems = audit::reference_problems<T>();
+  // The classic problems named (-p, --long-run-problem) join the exact ones; their
+  // references are shared by every family in the process and cached on disk.
+  std::vector<std::string> named = r.options.problems;
+  named.insert(named.end(), r.options.long_run_problems.begin(), r.options.long_run_problems.end());
+  audit::reference_settings settings;
+  settings.progress = r.options.progress;
+  const auto problems = audit::problems_named<T>(named, settings);
   for (const auto& s : steppers) {
     if (!selected(r.patterns, s.name)) continue;
     out.names.push_back(s.name);

@@ -138,13 +138,22 @@ double eps_of() {
   return static_cast<double>(tier_epsilon<T>());
 }
 
+/// The relative uncertainty of the problem's solution at t: 0 for a closed form.
+template <class T>
+double uncertainty_at(const problem<T>& pr, const T& t) {
+  return pr.exact_uncertainty ? pr.exact_uncertainty(t) : 0.0;
+}
+
 /// Global order: the halving study (studies.hpp) of runs over [0, t_end] from steps0 / 4
 /// steps up to max_steps, each run's error against the exact solution at t_end, and the
 /// change of the final state from the previous run (the stall detection's evidence).
+/// A certified reference (problem::exact_uncertainty u) floors the study as a tier of
+/// epsilon max(eps, u) would.
 template <class T>
 order_study global_order(const stepper_under_audit<T>& s, const problem<T>& pr,
                          const audit_options& opt) {
   const state<T> reference = pr.exact(pr.t_end);
+  const double floor_eps = std::max(eps_of<T>(), uncertainty_at(pr, pr.t_end));
   std::optional<state<T>> previous;
   const auto run = [&](long n) {
     study_run r;
@@ -169,9 +178,11 @@ order_study global_order(const stepper_under_audit<T>& s, const problem<T>& pr,
   const long max_steps = opt.max_study_steps > 0 ? static_cast<long>(opt.max_study_steps)
                         : std::is_floating_point_v<T> ? 1L << 16
                                                       : 1L << 14;
-  return halving_study(run, std::max<long>(2, pr.steps0 / 4), max_steps, eps_of<T>(),
-                       [&](long n) { return to_double(T(pr.t_end / T(n))); },
-                       !std::is_floating_point_v<T>);
+  order_study study = halving_study(run, std::max<long>(2, pr.steps0 / 4), max_steps, floor_eps,
+                                    [&](long n) { return to_double(T(pr.t_end / T(n))); },
+                                    !std::is_floating_point_v<T>);
+  if (floor_eps > eps_of<T>()) study.reference_floor = floor_eps;
+  return study;
 }
 
 /// Local order: the error of one step from the initial state against the exact solution,
@@ -181,9 +192,10 @@ template <class T>
 order_study local_order(const stepper_under_audit<T>& s, const problem<T>& pr,
                         const audit_options& opt) {
   order_study study;
-  const double eps = eps_of<T>();
+  double eps = eps_of<T>();
   T h = 8 * pr.h_local;  // high orders reach the floor within a few halvings of h_local
   for (int k = 0; k <= opt.max_local_halvings; ++k, h /= 2) {
+    eps = std::max(eps, uncertainty_at(pr, h));  // a certified reference's floor
     pr.system.reset_evaluations();
     state<T> x = pr.initial;
     try {
@@ -198,6 +210,7 @@ order_study local_order(const stepper_under_audit<T>& s, const problem<T>& pr,
     if (error < local_floor(eps, evals)) break;
   }
   fit_local(study, eps);
+  if (eps > eps_of<T>()) study.reference_floor = eps;
   return study;
 }
 
@@ -485,6 +498,12 @@ stepper_audit audit_stepper(const stepper_under_audit<T>& s,
     };
     guarded("global order", [&] { pa.global = detail::global_order(s, pr, opt); });
     guarded("local order", [&] { pa.local = detail::local_order(s, pr, opt); });
+    if (pr.exact_uncertainty) {
+      using std::log10;
+      const double u = pr.exact_uncertainty(pr.t_end);
+      pa.reference_digits = u > 0 ? -std::log10(u) : std::numeric_limits<double>::infinity();
+      pa.reference_uncertainty = std::max({u, pa.global.reference_floor, pa.local.reference_floor});
+    }
     // A first step that failed left no count: take the local study's finest step's.
     if (pa.evaluations_per_step == 0 && !pa.local.points.empty())
       pa.evaluations_per_step = pa.local.points.back().evaluations;
@@ -499,8 +518,12 @@ stepper_audit audit_stepper(const stepper_under_audit<T>& s,
     guarded("time symmetry", [&] {
       pa.symmetric = detail::time_symmetry(s, pr, opt, pa.evaluations_per_step);
     });
-    if (detail::selected(opt.long_run_problems, pr.name) && opt.long_run_steps > 0)
-      guarded("long run", [&] { pa.run = detail::run_long(s, pr, opt); });
+    if (detail::selected(opt.long_run_problems, pr.name) && opt.long_run_steps > 0) {
+      if (pr.long_run_refused.empty())
+        guarded("long run", [&] { pa.run = detail::run_long(s, pr, opt); });
+      else
+        pa.failures.push_back("long run: not run on " + pr.name + ": " + pr.long_run_refused);
+    }
     out.problems.push_back(std::move(pa));
   }
   out.verdicts = judge(out.declared, out.problems, detail::eps_of<T>());

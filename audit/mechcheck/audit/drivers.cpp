@@ -1,4 +1,5 @@
 #include "mechcheck/audit/drivers.hpp"
+#include "mechcheck/audit/problems/classic.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -215,7 +216,9 @@ driver_audit audit_driver(const adaptive_driver& d, const driver_options& opt) {
     if (!(std::isfinite(m) && m > 0))
       throw domain_error("audit_driver: " + d.name + ": a horizon multiple must be positive and finite, got " + to_text(m));
   // A name that matches no problem would audit nothing: refuse it with the valid names.
-  const std::vector<problem<double>> problems = reference_problems<double>();
+  reference_settings settings;
+  settings.progress = opt.progress;
+  const std::vector<problem<double>> problems = problems_named<double>(opt.problems, settings);
   for (const auto& name : opt.problems)
     if (std::none_of(problems.begin(), problems.end(), [&](const problem<double>& p) { return p.name == name; })) {
       std::string known;

@@ -142,6 +142,7 @@ json to_json(const order_study& s) {
                   {"change", s.stalled->change}, {"floor", s.stalled->floor},
                   {"margin", s.stalled->margin}};
   if (!s.note.empty()) j["note"] = s.note;
+  if (s.reference_floor > 0) j["reference_floor"] = s.reference_floor;
   return j;
 }
 
@@ -197,6 +198,8 @@ json to_json(const stepper_audit& a, const report_options& opt) {
       continue;
     }
     jp["evaluations_per_step"] = p.evaluations_per_step;
+    if (p.reference_digits)
+      jp["reference"] = {{"digits_at_t_end", *p.reference_digits}, {"uncertainty", p.reference_uncertainty}};
     if (!p.failures.empty()) jp["failures"] = p.failures;
     jp["global_order"] = to_json(p.global);
     jp["local_order"] = to_json(p.local);
@@ -345,6 +348,13 @@ std::string to_markdown(const std::vector<stepper_audit>& audits, const report_o
         continue;
       }
       for (const auto& f : p.failures) md << "- " << p.problem << ": not measured, " << f << "\n";
+      if (p.reference_digits) {
+        md << "- " << p.problem << ": reference certified to " << format("%.1f", *p.reference_digits)
+           << " digits at t_end";
+        const double floor = std::max(p.global.reference_floor, p.local.reference_floor);
+        if (floor > 0) md << "; above the tier's rounding, its uncertainty " << format("%.1e", floor) << " floors the studies";
+        md << "\n";
+      }
       if (!p.run) continue;
       md << "- " << p.problem << ", " << p.run->steps << " steps of h = "
          << format("%.4g", p.run->h) << ":";

@@ -108,6 +108,9 @@ struct order_study {
   fitted_exponent fit;
   std::optional<stall> stalled;  ///< the error stopped falling above the floor
   std::string note;  ///< why points are missing (a step that threw), if any
+  /// The epsilon of the floors it was fitted with where a certified reference's
+  /// uncertainty exceeded the tier's (0: the tier's).
+  double reference_floor = 0;
 };
 
 /// A defect that is zero for the claimed property: within its rounding budget, or
@@ -164,6 +167,12 @@ struct problem_audit {
   /// a solve that did not converge): "time symmetry: <the error>". Their claims read as
   /// not measured on this problem.
   std::vector<std::string> failures;
+  /// A problem whose solution is a certified reference (problems/reference_solution.hpp):
+  /// the digits of the reference at t_end, and the largest relative uncertainty of the
+  /// references the studies compared with; the studies' floors are those of a tier of that
+  /// epsilon where it exceeds the tier's. Empty and 0 for a closed form.
+  std::optional<double> reference_digits;
+  double reference_uncertainty = 0;
 };
 
 /// One reading of a claim's words and what the measurement says under it.

@@ -90,6 +90,10 @@ struct order_assessment {
   std::string evidence;
   int fewest_halvings_to_floor = 99;      ///< not-decisive fits that ended at the floor
   std::string floor_problems;
+  /// Those of them whose floor was a certified reference's, not the tier's.
+  std::string reference_problems;
+  /// Problems with no global fit because their reference's floor lies above the errors.
+  std::string unresolved_by_reference;
   /// Problems whose error sat at the rounding floor from the coarsest runs on (no halving
   /// above it): integrated to rounding, they say nothing of the order.
   std::string exact_problems;
@@ -121,12 +125,20 @@ inline order_assessment assess_order(const std::vector<problem_audit>& ps, doubl
         if (!decisive(gf) && gf.floor_h && gf.used < 3) {
           a.fewest_halvings_to_floor = std::min(a.fewest_halvings_to_floor, gf.used);
           a.floor_problems += (a.floor_problems.empty() ? "" : ", ") + pa.problem;
+          if (pa.global.reference_floor > 0)
+            a.reference_problems += (a.reference_problems.empty() ? "" : ", ") + pa.problem + " (" +
+                                    fixed(pa.reference_digits.value_or(0), 1) + " digits)";
         }
       }
     } else {
       ev += "global not resolved";
-      if (gf.floor_h && !pa.global.points.empty() && pa.global.points.size() <= 2)
+      if (pa.global.reference_floor > 0) {
+        ev += " (the reference is certified to " + fixed(pa.reference_digits.value_or(0), 1) + " digits)";
+        a.unresolved_by_reference += (a.unresolved_by_reference.empty() ? "" : ", ") + pa.problem + " (" +
+                                     fixed(pa.reference_digits.value_or(0), 1) + " digits)";
+      } else if (gf.floor_h && !pa.global.points.empty() && pa.global.points.size() <= 2) {
         a.exact_problems += (a.exact_problems.empty() ? "" : ", ") + pa.problem;
+      }
     }
     if (pa.global.stalled) {
       const stall& st = *pa.global.stalled;
@@ -194,6 +206,11 @@ inline verdict judge_order_as_fitted(const claims& c, const std::vector<problem_
   v.measured = least_text(a);
   if (!a.any_fit) {
     v.result = outcome::not_measured;
+    if (!a.unresolved_by_reference.empty()) {  // measured, and nothing resolvable in it
+      v.result = outcome::not_resolvable;
+      v.needs = "references certified to more digits (a shorter horizon): on " + a.unresolved_by_reference +
+                " the reference's uncertainty lies above the errors the runs reach";
+    }
     return v;
   }
   if (!c.order) {
@@ -242,13 +259,19 @@ inline verdict judge_order_as_fitted(const claims& c, const std::vector<problem_
     return v;
   }
   v.result = outcome::not_resolvable;
-  if (!a.exact_problems.empty() && a.settled_global.empty() && a.fewest_halvings_to_floor == 99) {
+  if (!a.unresolved_by_reference.empty() && a.settled_global.empty()) {
+    v.needs = "references certified to more digits (a shorter horizon): on " + a.unresolved_by_reference +
+              " the reference's uncertainty lies above the errors the runs reach";
+  } else if (!a.exact_problems.empty() && a.settled_global.empty() && a.fewest_halvings_to_floor == 99) {
     v.needs = "a problem the method does not integrate to rounding: on " + a.exact_problems +
               " the error is at the rounding floor from the coarsest runs";
   } else if (a.fewest_halvings_to_floor < 3) {
     v.needs = "a decisive fit needs three halvings above the rounding floor; on " + a.floor_problems +
               " the floor came after " + std::to_string(a.fewest_halvings_to_floor) +
-              (eps > 1e-20 ? ": a tier with a lower floor (-t mpfr50)" : ": a longer study");
+              (!a.reference_problems.empty()
+                   ? ": references certified to more digits (a shorter horizon) on " + a.reference_problems
+               : eps > 1e-20 ? ": a tier with a lower floor (-t mpfr50)"
+                             : ": a longer study");
   } else {
     v.needs = "fits of three exponents within " + fixed(rules::decisive_spread, 1) +
               ": a longer study (more halvings), or a problem whose error terms settle sooner";
@@ -275,9 +298,9 @@ inline verdict judge_order(const claims& c, const std::vector<problem_audit>& ps
   std::vector<problem_audit> refitted = ps;
   // Coefficients off by up to `coarse` err once, by a fixed amount, not once an
   // evaluation: the floors of one evaluation in a tier of that epsilon.
-  for (auto& pa : refitted) {
-    fit_global(pa.global, coarse, 1);
-    fit_local(pa.local, coarse, 1);
+  for (auto& pa : refitted) {  // never below a certified reference's floor
+    fit_global(pa.global, std::max(coarse, pa.global.reference_floor), 1);
+    fit_local(pa.local, std::max(coarse, pa.local.reference_floor), 1);
   }
   claims plain = c;
   plain.coefficient_precision.reset();
@@ -381,7 +404,9 @@ inline verdict judge_energy(const claims& c, const std::vector<problem_audit>& p
   bool any = false, bounded = true, drifts = false, undecided = false;
   std::string evidence, worst = "-";
   for (const auto& p : ps) {
-    if (!p.skipped.empty() || !p.run || p.run->invariants.empty()) continue;
+    // The energy comes first where a problem has one (a model of a vector field may not).
+    if (!p.skipped.empty() || !p.run || p.run->invariants.empty() || p.run->invariants.front().name != "energy")
+      continue;
     const drift& e = p.run->invariants.front();
     if (!p.run->failure.empty()) {
       evidence += p.problem + ": the long run failed (" + p.run->failure + "); ";
