@@ -23,6 +23,7 @@
 /// A failure is a model_error naming the model, the check and the value. The long run then
 /// tracks the energy, each integral and each constraint.
 
+#include <cmath>
 #include <cstdlib>
 #include <optional>
 #include <random>
@@ -244,6 +245,7 @@ void check_integrals(const model_setup& s, const H& h, const F& integrals, const
                       " values but integral_names has " + std::to_string(s.integral_names.size()));
   if (count == 0) return;
   const Eigen::Index n = x0.q.size();
+  int tested = 0;
   for (const auto& [q, p] : drawn_points(x0, s)) {
     const phase_point<mpfr50> x(q, p);
     dynamic_vector<mpfr50> dh;
@@ -252,6 +254,7 @@ void check_integrals(const model_setup& s, const H& h, const F& integrals, const
     } catch (const non_finite_error&) {
       continue;  // a drawn point at a singularity of H: no test there
     }
+    ++tested;
     for (Eigen::Index k = 0; k < count; ++k) {
       const auto df = phase_gradient(component<F>{integrals, k}, x, "model", s.integral_names[std::size_t(k)]).second;
       mpfr50 bracket = 0, scale = 0;
@@ -267,6 +270,9 @@ void check_integrals(const model_setup& s, const H& h, const F& integrals, const
                           to_text(static_cast<double>(check_budget())) + ")");
     }
   }
+  if (tested == 0)  // never a check passed by testing nothing
+    throw model_error("model '" + s.name + "': H is not finite at any of the " + std::to_string(s.check_points) +
+                      " points drawn within " + to_text(s.check_radius) + " of the start: the integrals are untested");
 }
 
 /// H(qa, pa) + H(qb, pb) - H(qa, pb) - H(qb, pa) = 0 at consecutive pairs of drawn points.
@@ -351,6 +357,10 @@ std::vector<invariant<T>> model_invariants(const model_setup& s, const Fn& integ
 /// finiteness.
 template <class T>
 state<mpfr50> start_of(const model_setup& s, bool canonical) {
+  if (s.check_points < 1 || !(s.check_radius > 0) || !std::isfinite(s.check_radius) || s.steps0 < 1)
+    throw model_error("model '" + s.name + "': check_points must be >= 1 (got " + std::to_string(s.check_points) +
+                      "), check_radius finite and > 0 (got " + to_text(s.check_radius) + "), steps0 >= 1 (got " +
+                      std::to_string(s.steps0) + ")");
   if (s.q0.empty()) throw model_error("model '" + s.name + "': no initial state (q0 is empty)");
   if (canonical && s.p0.size() != s.q0.size())
     throw model_error("model '" + s.name + "': q0 has " + std::to_string(s.q0.size()) + " components but p0 has " +
