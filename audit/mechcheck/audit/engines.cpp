@@ -8,13 +8,17 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <mutex>
 #include <ostream>
 #include <sstream>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
 #include "mechcheck/audit/audit.hpp"
+#include "mechcheck/audit/model.hpp"
+#include "mechcheck/audit/problems/chains.hpp"
 #include "mechcheck/central/kepler.hpp"
 #include "mechcheck/rigid_body/heavy_top.hpp"
 #include "mechcheck/audit/finite_differences.hpp"
@@ -297,6 +301,232 @@ scenario kepler() {
   };
   return s;
 }
+
+/// An angle in [-pi, pi]: relative joint angles read from frames and from references alike.
+double wrap(double a) { return std::remainder(a, 2 * std::acos(-1.0)); }
+
+std::string exact_text(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+/// The observables at t of a Hamiltonian model's certified reference (model.hpp, in double:
+/// the reference of the double-rounded start the engines are given), made when first asked
+/// for; a reference certified to fewer than 20 digits is an error, not a yardstick.
+template <class H>
+std::function<Eigen::VectorXd(double)> certified(hamiltonian_model<H> model,
+                                                 std::function<Eigen::VectorXd(const state<double>&)> observables) {
+  struct lazy {
+    std::mutex mutex;
+    std::optional<problem<double>> solved;
+  };
+  auto l = std::make_shared<lazy>();
+  return [model = std::move(model), observables = std::move(observables), l](double t) -> Eigen::VectorXd {
+    std::lock_guard<std::mutex> lock(l->mutex);
+    if (!l->solved) {
+      // 25 digits: nine above the engines' double rounding, a third of the cost of 35.
+      reference_settings settings;
+      settings.options.target_digits = 25;
+      l->solved = model_problem<double>(model, settings);
+    }
+    if (t == 0) return observables(l->solved->initial);
+    const state<double> x = l->solved->exact(t);
+    const double u = l->solved->exact_uncertainty(t);
+    if (!(u <= 1e-20))
+      throw convergence_error("the reference of " + model.setup.name + " at t = " + to_text(t) +
+                              " is certified to relative " + to_text(u) + " only");
+    return observables(x);
+  };
+}
+
+model_setup setup_of(const std::string& name, const std::string& parameters, const Eigen::VectorXd& q0,
+                     const Eigen::VectorXd& p0, double t_end) {
+  model_setup m;
+  m.name = "engine scenario " + name;
+  m.description = m.name;
+  m.source = "engines.cpp";
+  m.parameters = parameters;
+  for (double x : q0) m.q0.push_back(exact_text(x));
+  for (double x : p0) m.p0.push_back(exact_text(x));
+  m.t_end = exact_text(t_end);
+  return m;
+}
+
+/// A chain of n uniform bars of mass m and length l hanging along -z (each bar's moments
+/// m l^2 / 12 about x and y, 1e-3 m about its axis), released from rest at absolute
+/// angles phi0; gravity 9.81.
+scenario chain(scenario_kind kind, std::string name, double m, double l, const std::vector<double>& phi0,
+               double t_end, long steps0, std::string description) {
+  scenario s;
+  s.kind = kind;
+  s.name = std::move(name);
+  s.description = std::move(description);
+  s.structure = body_structure::chain;
+  s.gravity = 9.81;
+  s.t_end = t_end;
+  s.steps0 = steps0;
+  s.h_long = 0.01;
+  planar_chain model;
+  model.gravity = s.gravity;
+  std::string parameters = "g=" + exact_text(s.gravity);
+  double previous = 0;
+  for (std::size_t k = 0; k < phi0.size(); ++k) {
+    link b;
+    b.mass = m;
+    b.inertia = {m * l * l / 12, m * l * l / 12, 1e-3 * m};
+    b.com = {0, 0, -l / 2};
+    b.hinge = k == 0 ? Eigen::Vector3d(0, 0, 0) : Eigen::Vector3d(0, 0, -l);
+    b.angle0 = phi0[k] - previous;  // exact: the angles are binary fractions
+    previous = phi0[k];
+    s.links.push_back(b);
+    model.links.push_back({b.mass, b.inertia(1), b.com(0), b.com(2), b.hinge(0), b.hinge(2)});
+    parameters += "|m=" + exact_text(b.mass) + ",I=" + exact_text(b.inertia(1)) + ",com=" + exact_text(b.com(2)) +
+                  ",hinge=" + exact_text(b.hinge(2));
+  }
+  const Eigen::Index n = static_cast<Eigen::Index>(phi0.size());
+  Eigen::VectorXd angles(n);
+  for (Eigen::Index k = 0; k < n; ++k) angles(k) = s.links[std::size_t(k)].angle0;
+  s.scale = angles.norm() * std::sqrt(1 + s.gravity / l);
+  s.classes = {{"joint coordinates", 0, static_cast<int>(2 * n)}};
+  hamiltonian_model<planar_chain> hm{setup_of(s.name, parameters, Eigen::Map<const Eigen::VectorXd>(phi0.data(), n),
+                                              Eigen::VectorXd::Zero(n), t_end),
+                                     model};
+  hm.setup.separable = false;
+  s.exact = certified(hm, [model, n](const state<double>& x) {
+    // phidot = M(phi)^-1 p; relative angles and rates.
+    const Eigen::VectorXd rate = model.mass_matrix<double>(x.q).llt().solve(Eigen::VectorXd(x.p));
+    Eigen::VectorXd out(2 * n);
+    for (Eigen::Index k = 0; k < n; ++k) {
+      out(k) = wrap(x.q(k) - (k > 0 ? x.q(k - 1) : 0.0));
+      out(n + k) = rate(k) - (k > 0 ? rate(k - 1) : 0.0);
+    }
+    return out;
+  });
+  return s;
+}
+
+scenario double_pendulum() {
+  return chain(scenario_kind::double_pendulum, "double_pendulum", 1, 1, {0.5, 1}, 2, 32,
+               "two uniform bars of 1 kg and 1 m hinged about y, end to end from a fixed pivot, g = 9.81, released "
+               "from rest at absolute angles (0.5, 1) rad: the joints' angles and rates against a certified "
+               "reference (the chain's Hamiltonian in absolute angles, problems/chains.hpp)");
+}
+
+scenario chain5() {
+  return chain(scenario_kind::chain5, "chain5", 0.5, 0.5, {0.25, 0.5, 0.75, 1, 1.25}, 1, 32,
+               "five uniform bars of 0.5 kg and 0.5 m hinged about y end to end, g = 9.81, released from rest "
+               "at absolute angles 0.25 .. 1.25 rad: the five joints' angles and rates against a certified "
+               "reference (problems/chains.hpp)");
+}
+
+/// The four-bar of problems/chains.hpp as a chain closed on the ground: crank 1 m from the
+/// origin, coupler 2 m, rocker 1.5 m to the ground point (2, 0, 0), uniform bars of 1 kg
+/// (moments l^2 / 12 about y and z, 1e-3 about the bar), g = 9.81, released from rest at
+/// crank angle 1 rad.
+scenario four_bar_scenario() {
+  scenario s;
+  s.kind = scenario_kind::four_bar;
+  s.name = "four_bar";
+  s.description = "four-bar linkage: a chain of three uniform bars of 1 kg (crank 1 m, coupler 2 m, rocker 1.5 m) "
+                  "hinged about y from the origin, the rocker's end hinged to the ground at (2, 0, 0) (a loop), "
+                  "g = 9.81, released from rest at crank angle 1 rad: the three joints' angles and rates against "
+                  "a certified reference (the linkage's one-degree-of-freedom Hamiltonian, problems/chains.hpp)";
+  s.structure = body_structure::chain;
+  s.gravity = 9.81;
+  s.t_end = 2;
+  s.steps0 = 32;
+  s.h_long = 0.01;
+  four_bar model;
+  model.gravity = s.gravity;
+  const double length[3] = {model.crank, model.coupler, model.rocker};
+  std::string parameters = "g=" + exact_text(s.gravity) + "|d=" + exact_text(model.ground);
+  for (int k = 0; k < 3; ++k) {
+    link b;
+    b.mass = model.mass[k];
+    const double l = length[k];
+    b.inertia = {1e-3 * b.mass, b.mass * l * l / 12, b.mass * l * l / 12};
+    model.moment[k] = b.inertia(1);
+    b.com = {l / 2, 0, 0};
+    b.hinge = k == 0 ? Eigen::Vector3d(0, 0, 0) : Eigen::Vector3d(length[k - 1], 0, 0);
+    s.links.push_back(b);
+    parameters += "|l=" + exact_text(l) + ",m=" + exact_text(b.mass) + ",I=" + exact_text(b.inertia(1));
+  }
+  s.loop = loop_closure{{model.rocker, 0, 0}, {model.ground, 0, 0}};
+  const double phi1 = 1;
+  const auto g = model.at(mpfr50(phi1));
+  for (int k = 0; k < 3; ++k)
+    s.links[std::size_t(k)].angle0 = static_cast<double>(k == 0 ? g.phi[0] : mpfr50(g.phi[k] - g.phi[k - 1]));
+  Eigen::VectorXd angles(3);
+  for (int k = 0; k < 3; ++k) angles(k) = s.links[std::size_t(k)].angle0;
+  s.scale = angles.norm() * std::sqrt(1 + s.gravity);
+  s.classes = {{"joint coordinates", 0, 6}};
+  hamiltonian_model<four_bar> hm{setup_of(s.name, parameters, Eigen::VectorXd::Constant(1, phi1),
+                                          Eigen::VectorXd::Zero(1), s.t_end),
+                                 model};
+  hm.setup.separable = false;
+  s.exact = certified(hm, [model](const state<double>& x) {
+    const auto c = model.at(mpfr50(x.q(0)));
+    mpfr50 m = 0;
+    for (int k = 0; k < 3; ++k)
+      m += model.mass[k] * (c.vx[k] * c.vx[k] + c.vz[k] * c.vz[k]) + model.moment[k] * c.rate[k] * c.rate[k];
+    const mpfr50 phidot1 = mpfr50(x.p(0)) / m;
+    Eigen::VectorXd out(6);
+    for (int k = 0; k < 3; ++k) {
+      out(k) = wrap(static_cast<double>(k == 0 ? c.phi[0] : mpfr50(c.phi[k] - c.phi[k - 1])));
+      out(3 + k) = static_cast<double>(phidot1 * (k == 0 ? c.rate[0] : mpfr50(c.rate[k] - c.rate[k - 1])));
+    }
+    return out;
+  });
+  return s;
+}
+
+/// Three bodies of 1 kg on the figure-eight choreography (Chenciner & Montgomery 2000,
+/// initial conditions to 8 digits as Simo gives them), G = 1, in the plane z = 0.
+scenario three_body() {
+  scenario s;
+  s.kind = scenario_kind::three_body;
+  s.name = "three_body";
+  s.description = "three free bodies of 1 kg (moments 1e-3) under their mutual gravitation G = 1 (the engine's own "
+                  "force input), on the figure-eight choreography from x1 = -x2 = (0.97000436, -0.24308753, 0), "
+                  "x3 = 0, v3 = (-0.93240737, -0.86473146, 0), v1 = v2 = -v3 / 2: positions and velocities "
+                  "against a certified reference (problems/chains.hpp)";
+  s.structure = body_structure::free_bodies;
+  s.gravitation = 1;
+  s.t_end = 2;
+  s.steps0 = 32;
+  s.h_long = 0.01;
+  s.momentum = scenario::momentum_law::vector;
+  s.scale = 1;
+  const Eigen::Vector3d x1(0.97000436, -0.24308753, 0), v3(-0.93240737, -0.86473146, 0);
+  const Eigen::Vector3d x[3] = {x1, -x1, {0, 0, 0}}, v[3] = {-v3 / 2, -v3 / 2, v3};
+  n_bodies model;
+  model.gravitation = s.gravitation;
+  Eigen::VectorXd q0(9), p0(9);
+  for (int k = 0; k < 3; ++k) {
+    link b;
+    b.mass = 1;
+    b.inertia = {1e-3, 1e-3, 1e-3};
+    b.position0 = x[k];
+    b.velocity0 = v[k];
+    s.links.push_back(b);
+    model.masses.push_back(b.mass);
+    q0.segment<3>(3 * k) = x[k];
+    p0.segment<3>(3 * k) = b.mass * v[k];
+  }
+  s.classes = {{"position", 0, 9}, {"velocity", 9, 9}};
+  hamiltonian_model<n_bodies> hm{setup_of(s.name, "G=1|m=1,1,1", q0, p0, s.t_end), model};
+  hm.setup.separable = true;
+  s.exact = certified(hm, [model](const state<double>& y) {
+    Eigen::VectorXd out(18);
+    for (int k = 0; k < 3; ++k) {
+      out.segment<3>(3 * k) = y.q.segment<3>(3 * k);
+      out.segment<3>(9 + 3 * k) = y.p.segment<3>(3 * k) / model.masses[std::size_t(k)];
+    }
+    return out;
+  });
+  return s;
+}
 }  // namespace
 
 double hinge_inertia(const scenario& s) { return s.mass * s.com.squaredNorm() + s.inertia(1); }
@@ -328,10 +558,121 @@ std::vector<scenario> scenarios() {
   out.push_back(pendulum(scenario_kind::pendulum_large, "pendulum_large", 2.5));
   out.push_back(projectile());
   out.push_back(kepler());
+  out.push_back(double_pendulum());
+  out.push_back(chain5());
+  out.push_back(four_bar_scenario());
+  out.push_back(three_body());
   return out;
 }
 
+std::vector<body_frame> chain_frames(const scenario& s, const Eigen::VectorXd& angles, const Eigen::VectorXd& rates) {
+  const Eigen::Index n = static_cast<Eigen::Index>(s.links.size());
+  if (s.structure != body_structure::chain) throw domain_error("chain_frames: " + s.name + " is not a chain");
+  if (angles.size() != n || rates.size() != n)
+    throw dimension_error("chain_frames: " + s.name + " has " + std::to_string(n) + " joints, given " +
+                          std::to_string(angles.size()) + " angles and " + std::to_string(rates.size()) + " rates");
+  std::vector<body_frame> out(static_cast<std::size_t>(n));
+  double phi = 0, phidot = 0;
+  Eigen::Vector3d hinge = s.links[0].hinge, hinge_velocity = Eigen::Vector3d::Zero();
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const link& l = s.links[std::size_t(k)];
+    if (k > 0) {
+      const body_frame& parent = out[std::size_t(k - 1)];
+      const Eigen::Vector3d arm = parent.rotation * l.hinge;
+      hinge += arm;
+      hinge_velocity += parent.omega.cross(arm);
+    }
+    phi += angles(k);
+    phidot += rates(k);
+    body_frame& f = out[std::size_t(k)];
+    f.rotation = rotation_y(phi);
+    f.omega = {0, phidot, 0};
+    f.position = hinge + f.rotation * l.com;
+    f.velocity = hinge_velocity + f.omega.cross(f.rotation * l.com);
+  }
+  return out;
+}
+
+namespace {
+/// A multibody scenario's observation: the energy of every link (and their mutual
+/// gravitation), the angular momentum about the origin; a chain's joint angles and rates
+/// (the engine's joint coordinates where it has them, else the link frames') and its
+/// constraint violation; free bodies' positions and velocities.
+engine_observation observe_multibody(const scenario& s, const body_reading& r) {
+  const std::size_t n = s.links.size();
+  if (r.links.size() != n)
+    throw dimension_error("observe: " + s.name + " has " + std::to_string(n) + " bodies, the engine read " +
+                          std::to_string(r.links.size()));
+  engine_observation o;
+  for (std::size_t k = 0; k < n; ++k) {
+    const link& l = s.links[k];
+    const body_frame& f = r.links[k];
+    const Eigen::Vector3d wb = f.rotation.transpose() * f.omega, mb = l.inertia.cwiseProduct(wb);
+    o.energy += l.mass * f.velocity.squaredNorm() / 2 + wb.dot(mb) / 2 + l.mass * s.gravity * f.position(2);
+    o.momentum += l.mass * f.position.cross(f.velocity) + f.rotation * mb;
+    for (std::size_t j = k + 1; j < n && s.gravitation != 0; ++j)
+      o.energy -= s.gravitation * l.mass * s.links[j].mass / (r.links[j].position - f.position).norm();
+  }
+  if (s.structure == body_structure::free_bodies) {
+    o.observables.resize(Eigen::Index(6 * n));
+    for (std::size_t k = 0; k < n; ++k) {
+      o.observables.segment<3>(Eigen::Index(3 * k)) = r.links[k].position;
+      o.observables.segment<3>(Eigen::Index(3 * (n + k))) = r.links[k].velocity;
+    }
+    return o;
+  }
+  const Eigen::Index m = static_cast<Eigen::Index>(n);
+  o.observables.resize(2 * m);
+  if (r.joint_q.size() == m && r.joint_v.size() == m) {
+    for (Eigen::Index k = 0; k < m; ++k) o.observables(k) = wrap(r.joint_q(k)), o.observables(m + k) = r.joint_v(k);
+    o.readout = "the engine's joint coordinates";
+  } else {
+    double phi_before = 0, rate_before = 0;
+    for (Eigen::Index k = 0; k < m; ++k) {
+      const body_frame& f = r.links[std::size_t(k)];
+      const double phi = std::atan2(f.rotation(0, 2), f.rotation(0, 0));
+      o.observables(k) = wrap(phi - phi_before);
+      o.observables(m + k) = f.omega(1) - rate_before;
+      phi_before = phi;
+      rate_before = f.omega(1);
+    }
+    o.readout = "the link frames (rotation about y and angular velocity)";
+  }
+  // Each hinge: the link's origin from its point on the parent (the world for link 0),
+  // their velocities, the tilt of the link's y axis from the parent's; the loop likewise.
+  constraint_violation c;
+  const auto worst = [&c](const Eigen::Vector3d& dx, const Eigen::Vector3d& dv, const Eigen::Vector3d& da) {
+    c.position = std::max(c.position, dx.norm());
+    c.velocity = std::max(c.velocity, dv.norm());
+    c.axis = std::max(c.axis, da.norm());
+  };
+  for (std::size_t k = 0; k < n; ++k) {
+    const body_frame& f = r.links[k];
+    const Eigen::Vector3d arm = f.rotation * s.links[k].com;
+    const Eigen::Vector3d origin = f.position - arm, origin_velocity = f.velocity - f.omega.cross(arm);
+    if (k == 0) {
+      worst(origin - s.links[0].hinge, origin_velocity, f.rotation.col(1) - Eigen::Vector3d::UnitY());
+    } else {
+      const body_frame& p = r.links[k - 1];
+      const Eigen::Vector3d to_hinge = p.rotation * (s.links[k].hinge - s.links[k - 1].com);
+      worst(origin - (p.position + to_hinge), origin_velocity - (p.velocity + p.omega.cross(to_hinge)),
+            f.rotation.col(1) - p.rotation.col(1));
+    }
+  }
+  if (s.loop) {
+    const body_frame& f = r.links.back();
+    const Eigen::Vector3d arm = f.rotation * (s.loop->point - s.links.back().com);
+    const Eigen::Vector3d dx = f.position + arm - s.loop->anchor, dv = f.velocity + f.omega.cross(arm);
+    c.loop = dx.norm();
+    worst(dx, dv, f.rotation.col(1) - Eigen::Vector3d::UnitY());
+  }
+  o.constraint = c;
+  return o;
+}
+}  // namespace
+
 engine_observation observe(const scenario& s, const body_reading& r) {
+  if (s.structure != body_structure::one_body) return observe_multibody(s, r);
   engine_observation o;
   const Eigen::Vector3d wb = r.rotation.transpose() * r.omega, mb = s.inertia.cwiseProduct(wb);
   o.energy = s.mass * r.velocity.squaredNorm() / 2 + wb.dot(mb) / 2 + s.mass * s.gravity * r.position(2);
@@ -385,6 +726,8 @@ engine_observation observe(const scenario& s, const body_reading& r) {
       o.observables.resize(6);
       o.observables << r.position, r.velocity;
       break;
+    default:
+      throw domain_error("observe: " + s.name + " is a multibody scenario without its bodies");
   }
   return o;
 }
@@ -482,6 +825,7 @@ void run_long(const engine_integrator& in, const scenario& s, const engine_optio
         worst.position = std::max(worst.position, o.constraint->position);
         worst.velocity = std::max(worst.velocity, o.constraint->velocity);
         worst.axis = std::max(worst.axis, o.constraint->axis);
+        worst.loop = std::max(worst.loop, o.constraint->loop);
         anchor.add(n, o.constraint->position);
       }
     }
@@ -653,12 +997,15 @@ engine_audit audit_engine(const engine_integrator& in, const engine_options& opt
     engine_scenario_audit a;
     a.scenario = s.name;
     try {
+      if (s.structure != body_structure::one_body && !in.multibody)
+        throw scenario_refused(in.name + ": the adapter builds one-body scenarios only");
       order_of(in, s, opt, a);
       run_long(in, s, opt, a);
       jacobian_of(in, s, a);
       reversal_of(in, s, a);
       auto e = in.start(s);
       a.readout = observe(s, e->read()).readout;
+      a.model_differs = e->model_differs();
     } catch (const scenario_refused& e) {
       a.refused = e.what();
     } catch (const std::exception& e) {
@@ -669,7 +1016,7 @@ engine_audit audit_engine(const engine_integrator& in, const engine_options& opt
     for (const auto& [name, study] : a.classes) {
       problem_audit pa;
       pa.problem = s.name + " (" + name + ")";
-      pa.skipped = a.refused;
+      pa.skipped = a.refused.empty() && !a.model_differs.empty() ? "not judged: " + a.model_differs : a.refused;
       pa.global = study;
       problems.push_back(pa);
       if (std::find(class_names.begin(), class_names.end(), name) == class_names.end()) class_names.push_back(name);
@@ -799,6 +1146,7 @@ std::string constraint_text(const engine_scenario_audit& a) {
   std::string t = "anchor " + sci(a.constraint_first ? a.constraint_first->position : 0) + " m after one step, " +
                   sci(m.position) + " m at most; its velocity " + sci(m.velocity) + " m/s";
   if (m.axis > 0) t += "; axis " + sci(m.axis) + " rad";
+  if (m.loop > 0) t += "; loop closure " + sci(m.loop) + " m";
   if (a.constraint_growth) t += " (t^" + detail::fixed(*a.constraint_growth) + ")";
   return t;
 }
@@ -826,6 +1174,7 @@ void print_engines(std::ostream& out, const std::vector<engine_audit>& audits, c
       out << line;
       if (!s.failure.empty()) out << "    failed: " << s.failure << "\n";
       if (s.constraint_max) out << "    constraint: " << constraint_text(s) << "\n";
+      if (!s.model_differs.empty()) out << "    order not judged: " << s.model_differs << "\n";
     }
     out << "  order: declared " << a.order.declared << ", measured " << a.order.measured << ": "
         << outcome_name(a.order.result) << (a.order.needs.empty() ? "" : " (needs " + a.order.needs + ")") << "\n";
@@ -852,7 +1201,9 @@ std::string engines_to_json(const std::vector<engine_audit>& audits, const std::
     return j;
   };
   const auto violation = [](const constraint_violation& c) {
-    return json{{"position", c.position}, {"velocity", c.velocity}, {"axis", c.axis}};
+    json j{{"position", c.position}, {"velocity", c.velocity}, {"axis", c.axis}};
+    if (c.loop > 0) j["loop"] = c.loop;
+    return j;
   };
   json all = json::array();
   for (const auto& a : audits) {
@@ -865,6 +1216,7 @@ std::string engines_to_json(const std::vector<engine_audit>& audits, const std::
       if (!s.refused.empty()) js["refused"] = s.refused;
       if (!s.failure.empty()) js["failure"] = s.failure;
       if (!s.readout.empty()) js["readout"] = s.readout;
+      if (!s.model_differs.empty()) js["model_differs"] = s.model_differs;
       for (const auto& p : s.global.points)
         js["global"].push_back({{"h", p.h}, {"error", std::isfinite(p.error) ? json(p.error) : json(sci(p.error))}});
       js["global_fit"] = {{"value", s.global.fit.value}, {"spread", s.global.fit.spread}, {"used", s.global.fit.used}};
@@ -927,7 +1279,8 @@ std::string engines_to_markdown(const std::vector<engine_audit>& audits, const s
                                : s.reversal_refused.empty() ? std::string("-") : std::string("no negative step"))
          << " | "
          << (s.seconds_per_step > 0 ? detail::fixed(s.seconds_per_step * 1e6) : std::string("-")) << " | "
-         << (s.readout.empty() ? "-" : s.readout) << " |\n";
+         << (s.readout.empty() ? "-" : s.readout)
+         << (s.model_differs.empty() ? "" : "; order not judged: " + s.model_differs) << " |\n";
   md << "\n";
   if (!shapes.empty()) {
     md << "## Inertia of primitive shapes\n\nPrincipal moments the engine computes from mass and dimensions "

@@ -56,6 +56,38 @@ enum class scenario_kind {
   pendulum_large,      ///< hinge pendulum, amplitude 2.5 rad
   projectile,          ///< free body in uniform gravity: position and velocity
   kepler,              ///< point mass under a central inverse-square force
+  double_pendulum,     ///< two links hinged about y: joint angles and rates
+  chain5,              ///< five links hinged about y
+  four_bar,            ///< a chain of three bars closed on the ground (a loop)
+  three_body,          ///< three free bodies under their mutual gravitation
+};
+
+/// How a scenario's bodies are put together.
+enum class body_structure {
+  one_body,     ///< the scenario's own body (its fields below), held by `joint`
+  chain,        ///< `links`, each hinged about world y to the one before (link 0 to the world)
+  free_bodies,  ///< `links`, free, under their mutual gravitation
+};
+
+/// One body of a multibody scenario: mass, principal moments about its centre of mass
+/// along its frame's axes (the world's at zero angles), centre of mass `com` in its frame.
+/// In a chain the frame's origin is the link's hinge, at `hinge` in the parent link's frame
+/// (link 0: in the world); its state at t = 0 is the joint's angle `angle0` about y from
+/// the parent's frame, and rate `rate0`. A free body's frame origin is its centre of mass,
+/// its state at t = 0 position0 and velocity0 (no rotation).
+struct link {
+  double mass = 1;
+  Eigen::Vector3d inertia{1, 1, 1};
+  Eigen::Vector3d com{0, 0, 0};
+  Eigen::Vector3d hinge{0, 0, 0};
+  double angle0 = 0, rate0 = 0;
+  Eigen::Vector3d position0{0, 0, 0}, velocity0{0, 0, 0};
+};
+
+/// A chain's last link hinged about y to the world as well: its point `point` (its frame)
+/// at the world point `anchor`.
+struct loop_closure {
+  Eigen::Vector3d point{0, 0, 0}, anchor{0, 0, 0};
 };
 
 /// How the scenario's body is held.
@@ -79,6 +111,10 @@ enum class joint_kind {
 struct scenario {
   scenario_kind kind;
   std::string name, description;
+  body_structure structure = body_structure::one_body;
+  std::vector<link> links;          ///< chain and free bodies
+  std::optional<loop_closure> loop;  ///< a chain closed on the ground
+  double gravitation = 0;           ///< G between free bodies: force G m_i m_j / r^2
   joint_kind joint = joint_kind::free;
   double mass = 1;
   Eigen::Vector3d inertia{1, 1, 1};
@@ -117,11 +153,21 @@ scenario with_hinge_state(scenario s, double theta, double thetadot);
 /// Moment of inertia of a hinge scenario's body about its hinge: m |com|^2 + I_yy.
 double hinge_inertia(const scenario& s);
 
-/// The body's state as an engine reports it: orientation (body to world), centre of mass
-/// position and velocity, angular velocity in the world frame.
-struct body_reading {
+/// A body's frame: orientation (body to world), centre of mass position and velocity,
+/// angular velocity in the world frame.
+struct body_frame {
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
   Eigen::Vector3d position{0, 0, 0}, velocity{0, 0, 0}, omega{0, 0, 0};
+};
+
+/// The frames of a chain's links at joint angles and rates (relative, as link::angle0 and
+/// rate0): what an engine in body coordinates starts from.
+std::vector<body_frame> chain_frames(const scenario& s, const Eigen::VectorXd& angles, const Eigen::VectorXd& rates);
+
+/// The body's state as an engine reports it (the frame above is the one-body scenario's).
+struct body_reading : body_frame {
+  /// Multibody scenarios: every link's frame, in the scenario's order.
+  std::vector<body_frame> links;
   /// The engine's own coordinates of a hinge where it integrates in them (MuJoCo's qpos
   /// and qvel, Simbody's q and u, Bullet multibody's joint position and velocity, ODE's
   /// hinge angle and rate): angle (about world y, from the scenario's zero) and rate. Empty
@@ -131,11 +177,14 @@ struct body_reading {
 
 /// How far a jointed body is from its joint: the anchor (the body frame's origin, the
 /// pivot) from the world origin, the anchor's velocity, and for a hinge the tilt of the
-/// body's y axis from world y -- all zero for a satisfied constraint.
+/// body's y axis from world y -- all zero for a satisfied constraint. A chain: the largest
+/// over its hinges (each link's origin from its point on the parent, the tilt of its y
+/// axis from the parent's) and its loop closure (the last link's point from its anchor).
 struct constraint_violation {
   double position = 0;  ///< |x - R com|: the anchor's distance from the pivot, m
   double velocity = 0;  ///< |v - omega x (R com)|: the anchor's speed, m/s
   double axis = 0;      ///< |R e_y - e_y| (hinge): the axis' tilt, rad to first order
+  double loop = 0;      ///< a closed chain: its loop closure's separation alone, m
 };
 
 /// What the audit compares after each step.
@@ -144,7 +193,8 @@ struct engine_observation {
   double energy = 0;             ///< total energy (kinetic + potential)
   Eigen::Vector3d momentum{0, 0, 0};  ///< angular momentum about the origin (world frame)
   /// Where the hinge observables came from: "the engine's joint coordinates" or "the body
-  /// frame (rotation and angular velocity)"; empty for other scenarios.
+  /// frame (rotation and angular velocity)" ("the link frames" for a chain); empty for
+  /// other scenarios.
   std::string readout;
   std::optional<constraint_violation> constraint;  ///< jointed scenarios
 };
@@ -159,6 +209,10 @@ class engine_run {
   /// One step of size h; throws error (naming the engine's message) on failure.
   virtual void step(double h) = 0;
   virtual body_reading read() const = 0;
+  /// Non-empty: the engine integrates another model than the scenario's, and how (a loop
+  /// closed by a soft constraint): the order studies then measure the distance between the
+  /// models and say nothing of the integrator's order, which they do not judge.
+  virtual std::string model_differs() const { return {}; }
 };
 
 /// An engine integrator: how to start a run of a scenario (throws scenario_refused).
@@ -169,6 +223,9 @@ struct engine_integrator {
   /// allow), symplectic, energy behaviour.
   claims declared;
   std::function<std::unique_ptr<engine_run>(const scenario&)> start;
+  /// The adapter builds multibody scenarios (chains, the loop, free bodies); without it
+  /// they are refused before start is called.
+  bool multibody = false;
 };
 
 /// The audit of one integrator on one scenario.
@@ -180,6 +237,7 @@ struct engine_scenario_audit {
   /// The order study of each observable class, in the scenario's order.
   std::vector<std::pair<std::string, order_study>> classes;
   std::string readout;  ///< where the hinge observables came from (engine_observation)
+  std::string model_differs;  ///< engine_run::model_differs: the order studies not judged
   /// Constraint violation of a jointed body: after the first step of h_long, and the
   /// largest over the long run, with the growth exponent of the anchor's separation.
   std::optional<constraint_violation> constraint_first, constraint_max;

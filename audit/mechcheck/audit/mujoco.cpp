@@ -22,6 +22,17 @@ void on_warning(const char* msg) { last_warning = msg; }
 /// The run whose mj_step is under way on this thread (for the passive-force callback).
 thread_local const scenario* stepping = nullptr;
 void central_force(const mjModel*, mjData* d) {
+  if (stepping && stepping->gravitation != 0) {  // free bodies: each one's free joint, in order
+    const std::vector<link>& b = stepping->links;
+    for (std::size_t k = 0; k < b.size(); ++k)
+      for (std::size_t j = k + 1; j < b.size(); ++j) {
+        const Eigen::Vector3d xk(d->qpos + 7 * k), xj(d->qpos + 7 * j);
+        const Eigen::Vector3d r = xj - xk;
+        const Eigen::Vector3d f = stepping->gravitation * b[k].mass * b[j].mass / (r.norm() * r.squaredNorm()) * r;
+        for (int i = 0; i < 3; ++i) d->qfrc_passive[6 * k + std::size_t(i)] += f(i), d->qfrc_passive[6 * j + std::size_t(i)] -= f(i);
+      }
+    return;
+  }
   if (!stepping || stepping->central == 0) return;
   const Eigen::Vector3d x(d->qpos[0], d->qpos[1], d->qpos[2]);  // free joint: the centre of mass
   const Eigen::Vector3d f = -stepping->mass * stepping->central / (x.norm() * x.squaredNorm()) * x;
@@ -73,6 +84,48 @@ std::string mjcf(const scenario& s, int integrator) {
                 -s.gravity, integrator_xml(integrator), joint, s.com(0), s.com(1), s.com(2), s.mass,
                 s.inertia(0), s.inertia(1), s.inertia(2));
   return buf;
+}
+
+std::string numbers(std::initializer_list<double> xs) {
+  std::string out;
+  char buf[32];
+  for (double x : xs) {
+    std::snprintf(buf, sizeof buf, "%s%.17g", out.empty() ? "" : " ", x);
+    out += buf;
+  }
+  return out;
+}
+std::string vec(const Eigen::Vector3d& v) { return numbers({v(0), v(1), v(2)}); }
+
+/// The MJCF of a multibody scenario: a chain as nested bodies each with a hinge about y
+/// (its loop closure as an equality `connect` of the last link's point to the world,
+/// MuJoCo's default soft-constraint parameters), free bodies each with a free joint.
+/// qpos of a hinge is its angle from the parent's frame (ref: the angle at which the body
+/// sits in the model).
+std::string mjcf_multibody(const scenario& s, int integrator) {
+  std::string xml = "<mujoco><compiler angle=\"radian\"/><option timestep=\"0.01\" gravity=\"0 0 " +
+                    numbers({-s.gravity}) + "\" integrator=\"" + integrator_xml(integrator) + "\"/><worldbody>";
+  const auto inertial = [](const link& l) {
+    return "<inertial pos=\"" + vec(l.com) + "\" mass=\"" + numbers({l.mass}) + "\" diaginertia=\"" + vec(l.inertia) +
+           "\"/>";
+  };
+  if (s.structure == body_structure::chain) {
+    for (std::size_t k = 0; k < s.links.size(); ++k)
+      // Each body placed at its start (its joint's ref the start angle): MuJoCo computes a
+      // connect's point on the world in the model's configuration, qpos0 = ref.
+      xml += "<body name=\"link" + std::to_string(k) + "\" pos=\"" + vec(s.links[k].hinge) + "\" axisangle=\"0 1 0 " +
+             numbers({s.links[k].angle0}) + "\"><joint type=\"hinge\" axis=\"0 1 0\" ref=\"" +
+             numbers({s.links[k].angle0}) + "\"/>" + inertial(s.links[k]);
+    for (std::size_t k = 0; k < s.links.size(); ++k) xml += "</body>";
+    xml += "</worldbody>";
+    if (s.loop)
+      xml += "<equality><connect body1=\"link" + std::to_string(s.links.size() - 1) + "\" anchor=\"" +
+             vec(s.loop->point) + "\"/></equality>";
+  } else {
+    for (const link& l : s.links) xml += "<body><freejoint/>" + inertial(l) + "</body>";
+    xml += "</worldbody>";
+  }
+  return xml + "</mujoco>";
 }
 
 void put_quaternion(const Eigen::Matrix3d& r, double* q) {
@@ -150,9 +203,25 @@ class run final : public engine_run {
     if (dexp_) integrator = mjINT_RK4;
     if (s.central != 0 && s.joint != joint_kind::free)
       throw scenario_refused(name_ + ": the central force is applied to a free body only");
-    model_ = load(mjcf(s, integrator));
+    model_ = load(s.structure == body_structure::one_body ? mjcf(s, integrator) : mjcf_multibody(s, integrator));
     data_ = mj_makeData(model_);
     if (!data_) throw error(name_ + ": mj_makeData failed");
+    if (s.structure != body_structure::one_body) {
+      for (std::size_t k = 0; k < s.links.size(); ++k) {
+        const link& l = s.links[k];
+        if (s.structure == body_structure::chain) {
+          data_->qpos[k] = l.angle0;
+          data_->qvel[k] = l.rate0;
+        } else {
+          for (int i = 0; i < 3; ++i) data_->qpos[7 * k + std::size_t(i)] = l.position0(i);
+          put_quaternion(Eigen::Matrix3d::Identity(), data_->qpos + 7 * k + 3);
+          for (int i = 0; i < 3; ++i)
+            data_->qvel[6 * k + std::size_t(i)] = l.velocity0(i), data_->qvel[6 * k + 3 + std::size_t(i)] = 0;
+        }
+      }
+      mj_forward(model_, data_);
+      return;
+    }
     const Eigen::Vector3d w_body = s.rotation0.transpose() * s.omega0;
     switch (s.joint) {
       case joint_kind::free:
@@ -206,6 +275,13 @@ class run final : public engine_run {
         throw non_finite_error(name_ + ": step " + std::to_string(steps_) + ": qpos[" + std::to_string(i) + "] is not finite");
   }
 
+  std::string model_differs() const override {
+    if (!s_.loop) return {};
+    return "MuJoCo closes the loop with a soft equality constraint (connect, default solref 0.02 1: a time "
+           "constant of 0.02 s, documented in MuJoCo's Modeling chapter, section Solver parameters): it integrates a "
+           "compliant linkage, not the rigid one";
+  }
+
   body_reading read() const override {
     // The positions and velocities of the state mj_step left (its xpos and cvel are those
     // of the step's start); mj_step recomputes them all before the next step.
@@ -213,6 +289,23 @@ class run final : public engine_run {
     mj_comPos(model_, data_);
     mj_comVel(model_, data_);
     body_reading r;
+    if (s_.structure != body_structure::one_body) {
+      for (int b = 1; b < model_->nbody; ++b) {
+        body_frame f;
+        f.rotation = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(data_->xmat + 9 * b);
+        f.position = Eigen::Map<const Eigen::Vector3d>(data_->xipos + 3 * b);
+        double v[6];
+        mj_objectVelocity(model_, data_, mjOBJ_BODY, b, v, 0);
+        f.omega = Eigen::Map<const Eigen::Vector3d>(v);
+        f.velocity = Eigen::Map<const Eigen::Vector3d>(v + 3);
+        r.links.push_back(f);
+      }
+      if (s_.structure == body_structure::chain) {  // the hinges' qpos and qvel, in order
+        r.joint_q = Eigen::Map<const Eigen::VectorXd>(data_->qpos, model_->nq);
+        r.joint_v = Eigen::Map<const Eigen::VectorXd>(data_->qvel, model_->nv);
+      }
+      return r;
+    }
     r.rotation = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(data_->xmat + 9);
     r.position = Eigen::Map<const Eigen::Vector3d>(data_->xipos + 3);
     double v[6];
@@ -300,6 +393,7 @@ std::vector<engine_integrator> integrators() {
     // section I.1.2) without saying so: no symplecticity is declared.
     const int id = i.id;
     e.start = [id](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, id); };
+    e.multibody = true;
     out.push_back(std::move(e));
   }
   // The fix of mujoco::RK4's orientation (docs/findings/upstream/mujoco-rk4.md), as an
@@ -312,6 +406,7 @@ std::vector<engine_integrator> integrators() {
              "order 4";
   e.declared.order = 4;
   e.start = [](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, integrator_dexp); };
+  e.multibody = true;
   out.push_back(std::move(e));
   return out;
 }

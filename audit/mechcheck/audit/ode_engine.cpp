@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
@@ -71,6 +72,10 @@ class run final : public engine_run {
     world_ = dWorldCreate();
     dWorldSetGravity(world_, 0, 0, -s.gravity);
     if (m.iterations > 0) dWorldSetQuickStepNumIterations(world_, m.iterations);
+    if (s.structure != body_structure::one_body) {
+      build_multibody(s, m);
+      return;
+    }
     body_ = dBodyCreate(world_);
     dMass mass;
     // ODE keeps a body's centre of mass at its origin: the body's position is the centre.
@@ -112,6 +117,10 @@ class run final : public engine_run {
   void step(double h) override {
     if (!(h != 0 && std::isfinite(h))) throw domain_error(name_ + ": the step must be finite and non-zero, got " + to_text(h));
     ++steps_;
+    if (!bodies_.empty()) {
+      step_multibody(h);
+      return;
+    }
     if (s_.central != 0) {  // ODE's force accumulator, cleared by each step
       const Eigen::Vector3d x = vec(dBodyGetPosition(body_));
       const Eigen::Vector3d f = -s_.mass * s_.central / (x.norm() * x.squaredNorm()) * x;
@@ -131,6 +140,8 @@ class run final : public engine_run {
 
   body_reading read() const override {
     body_reading r;
+    for (dBodyID b : bodies_) r.links.push_back(frame_of(b));
+    if (!bodies_.empty()) return r;
     r.rotation = rotation_of(body_);
     r.position = vec(dBodyGetPosition(body_));
     r.velocity = vec(dBodyGetLinearVel(body_));
@@ -139,6 +150,93 @@ class run final : public engine_run {
   }
 
  private:
+  static body_frame frame_of(dBodyID b) {
+    body_frame f;
+    f.rotation = rotation_of(b);
+    f.position = vec(dBodyGetPosition(b));
+    f.velocity = vec(dBodyGetLinearVel(b));
+    f.omega = vec(dBodyGetAngularVel(b));
+    return f;
+  }
+
+  dBodyID add_body(const link& l, const body_frame& f) {
+    dBodyID b = dBodyCreate(world_);
+    dMass mass;
+    dMassSetParameters(&mass, l.mass, 0, 0, 0, l.inertia(0), l.inertia(1), l.inertia(2), 0, 0, 0);
+    dBodySetMass(b, &mass);
+    dMatrix3 r;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) r[4 * i + j] = f.rotation(i, j);
+      r[4 * i + 3] = 0;
+    }
+    dBodySetRotation(b, r);
+    dBodySetPosition(b, f.position(0), f.position(1), f.position(2));
+    dBodySetLinearVel(b, f.velocity(0), f.velocity(1), f.velocity(2));
+    dBodySetAngularVel(b, f.omega(0), f.omega(1), f.omega(2));
+    dBodySetGyroscopicMode(b, mode_.gyroscopic ? 1 : 0);
+    dBodySetFiniteRotationMode(b, mode_.finite ? 1 : 0);
+    bodies_.push_back(b);
+    return b;
+  }
+
+  void hinge(dBodyID a, dBodyID b, const Eigen::Vector3d& anchor) {
+    dJointID j = dJointCreateHinge(world_, nullptr);
+    dJointAttach(j, a, b);
+    dJointSetHingeAnchor(j, anchor(0), anchor(1), anchor(2));
+    dJointSetHingeAxis(j, 0, 1, 0);
+  }
+
+  /// A chain: a body per link at its start frame, a hinge about y at each link's origin to
+  /// the link before (the world for link 0), and one to the world at the loop's anchor;
+  /// free bodies: bodies alone (their gravitation added before each step).
+  void build_multibody(const scenario& s, mode) {
+    if (s.structure == body_structure::free_bodies) {
+      for (const link& l : s.links) {
+        body_frame f;
+        f.position = l.position0;
+        f.velocity = l.velocity0;
+        add_body(l, f);
+      }
+      return;
+    }
+    Eigen::VectorXd angles(static_cast<Eigen::Index>(s.links.size())), rates(angles.size());
+    for (std::size_t k = 0; k < s.links.size(); ++k) angles(Eigen::Index(k)) = s.links[k].angle0, rates(Eigen::Index(k)) = s.links[k].rate0;
+    const std::vector<body_frame> frames = chain_frames(s, angles, rates);
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+      dBodyID b = add_body(s.links[k], frames[k]);
+      const Eigen::Vector3d origin = frames[k].position - frames[k].rotation * s.links[k].com;
+      hinge(b, k == 0 ? nullptr : bodies_[k - 1], origin);
+    }
+    if (s.loop) {
+      const body_frame& f = frames.back();
+      hinge(bodies_.back(), nullptr, f.position + f.rotation * (s.loop->point - s.links.back().com));
+    }
+  }
+
+  void step_multibody(double h) {
+    if (s_.gravitation != 0)  // ODE's force accumulators, cleared by each step
+      for (std::size_t k = 0; k < bodies_.size(); ++k)
+        for (std::size_t j = k + 1; j < bodies_.size(); ++j) {
+          const Eigen::Vector3d r = vec(dBodyGetPosition(bodies_[j])) - vec(dBodyGetPosition(bodies_[k]));
+          const Eigen::Vector3d f =
+              s_.gravitation * s_.links[k].mass * s_.links[j].mass / (r.norm() * r.squaredNorm()) * r;
+          dBodyAddForce(bodies_[k], f(0), f(1), f(2));
+          dBodyAddForce(bodies_[j], -f(0), -f(1), -f(2));
+        }
+    int ok = 0;
+    try {
+      ok = mode_.quick ? dWorldQuickStep(world_, h) : dWorldStep(world_, h);
+    } catch (const error& e) {
+      throw convergence_error(name_ + ": step " + std::to_string(steps_) + ": " + e.what());
+    }
+    if (!ok) throw convergence_error(name_ + ": step " + std::to_string(steps_) + ": the step function failed (memory)");
+    for (std::size_t k = 0; k < bodies_.size(); ++k)
+      if (!vec(dBodyGetPosition(bodies_[k])).allFinite() || !vec(dBodyGetAngularVel(bodies_[k])).allFinite())
+        throw non_finite_error(name_ + ": step " + std::to_string(steps_) + ": body " + std::to_string(k) +
+                               "'s state is not finite");
+  }
+
+  std::vector<dBodyID> bodies_;
   scenario s_;
   mode mode_;
   std::string name_;
@@ -202,6 +300,7 @@ std::vector<engine_integrator> integrators() {
                            : "infinitesimal orientation update (default)") +
                    "; ODE's headers state no order";
         e.start = [m](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, m); };
+        e.multibody = true;
         out.push_back(std::move(e));
       }
   // QuickStep with eight times its default SOR iterations (objects.h,
@@ -215,6 +314,7 @@ std::vector<engine_integrator> integrators() {
              "(objects.h: \"More iterations will give a more accurate solution, but will take longer to compute\", "
              "\"The default is 20 iterations\"); ODE's headers state no order";
   e.start = [many](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, many); };
+  e.multibody = true;
   out.push_back(std::move(e));
   return out;
 }
