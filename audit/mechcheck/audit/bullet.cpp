@@ -3,11 +3,14 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
+#include <BulletDynamics/Featherstone/btMultiBodyPoint2Point.h>
 #include <btBulletDynamicsCommon.h>
 
 #include <cmath>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -49,6 +52,10 @@ class run final : public engine_run {
                                                         config_.get());
     world_->setGravity(btVector3(0, 0, -s.gravity));
     shape_ = std::make_unique<btSphereShape>(0.1);  // collision only; the inertia is given
+    if (s.structure != body_structure::one_body) {
+      build_multibody(s, g);
+      return;
+    }
     // A btRigidBody's frame is its centre of mass.
     btTransform start;
     start.setOrigin(bt(s.position0));
@@ -83,6 +90,8 @@ class run final : public engine_run {
   ~run() override {
     if (joint_) world_->removeConstraint(joint_.get());
     if (body_) world_->removeRigidBody(body_.get());
+    for (auto& j : joints_) world_->removeConstraint(j.get());
+    for (auto& b : bodies_) world_->removeRigidBody(b.get());
   }
   run(const run&) = delete;
   run& operator=(const run&) = delete;
@@ -90,6 +99,10 @@ class run final : public engine_run {
   void step(double h) override {
     if (!(h != 0 && std::isfinite(h))) throw domain_error(name_ + ": the step must be finite and non-zero, got " + to_text(h));
     ++steps_;
+    if (!bodies_.empty()) {
+      step_multibody(h);
+      return;
+    }
     if (s_.central != 0) {  // cleared by each stepSimulation
       const Eigen::Vector3d x = vec(body_->getCenterOfMassPosition());
       body_->applyCentralForce(bt(Eigen::Vector3d(-s_.mass * s_.central / (x.norm() * x.squaredNorm()) * x)));
@@ -102,6 +115,8 @@ class run final : public engine_run {
 
   body_reading read() const override {
     body_reading r;
+    for (const auto& b : bodies_) r.links.push_back(frame_of(*b));
+    if (!bodies_.empty()) return r;
     r.rotation = mat(body_->getWorldTransform().getBasis());
     r.position = vec(body_->getCenterOfMassPosition());
     r.velocity = vec(body_->getLinearVelocity());
@@ -110,6 +125,84 @@ class run final : public engine_run {
   }
 
  private:
+  static body_frame frame_of(const btRigidBody& b) {
+    body_frame f;
+    f.rotation = mat(b.getWorldTransform().getBasis());
+    f.position = vec(b.getCenterOfMassPosition());
+    f.velocity = vec(b.getLinearVelocity());
+    f.omega = vec(b.getAngularVelocity());
+    return f;
+  }
+
+  btRigidBody& add_body(const link& l, const body_frame& f, const gyroscopic_mode& g) {
+    btTransform start;
+    start.setOrigin(bt(f.position));
+    const Eigen::Matrix3d& r = f.rotation;
+    start.setBasis(btMatrix3x3(r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0), r(2, 1), r(2, 2)));
+    btRigidBody::btRigidBodyConstructionInfo info(l.mass, nullptr, shape_.get(), bt(l.inertia));
+    info.m_startWorldTransform = start;
+    info.m_linearDamping = 0;
+    info.m_angularDamping = 0;
+    bodies_.push_back(std::make_unique<btRigidBody>(info));
+    btRigidBody& b = *bodies_.back();
+    b.setActivationState(DISABLE_DEACTIVATION);
+    b.setFlags(g.flags);
+    // No collisions: the links touch at their hinges, the free bodies pass close.
+    world_->addRigidBody(&b, 1, 0);
+    b.setLinearVelocity(bt(f.velocity));
+    b.setAngularVelocity(bt(f.omega));
+    return b;
+  }
+
+  /// A chain: a btRigidBody per link at its start frame, a btHingeConstraint about y at
+  /// each link's origin to the link before (to the world for link 0), and one to the world
+  /// at the loop's anchor; free bodies alone (their gravitation applied before each step).
+  void build_multibody(const scenario& s, const gyroscopic_mode& g) {
+    if (s.structure == body_structure::free_bodies) {
+      for (const link& l : s.links) {
+        body_frame f;
+        f.position = l.position0;
+        f.velocity = l.velocity0;
+        add_body(l, f, g);
+      }
+      return;
+    }
+    Eigen::VectorXd angles(static_cast<Eigen::Index>(s.links.size())), rates(angles.size());
+    for (std::size_t k = 0; k < s.links.size(); ++k)
+      angles(Eigen::Index(k)) = s.links[k].angle0, rates(Eigen::Index(k)) = s.links[k].rate0;
+    const std::vector<body_frame> frames = chain_frames(s, angles, rates);
+    const btVector3 axis(0, 1, 0);  // y in every link's frame: the links turn about y
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+      btRigidBody& b = add_body(s.links[k], frames[k], g);
+      const btVector3 here = bt(Eigen::Vector3d(-s.links[k].com));  // the link's origin, from its centre
+      if (k == 0)
+        joints_.push_back(std::make_unique<btHingeConstraint>(b, here, axis));
+      else
+        joints_.push_back(std::make_unique<btHingeConstraint>(
+            *bodies_[k - 1], b, bt(Eigen::Vector3d(s.links[k].hinge - s.links[k - 1].com)), here, axis, axis));
+    }
+    if (s.loop)
+      joints_.push_back(std::make_unique<btHingeConstraint>(
+          *bodies_.back(), bt(Eigen::Vector3d(s.loop->point - s.links.back().com)), axis));
+    for (auto& j : joints_) world_->addConstraint(j.get(), true);
+  }
+
+  void step_multibody(double h) {
+    if (s_.gravitation != 0)  // cleared by each stepSimulation
+      for (std::size_t k = 0; k < bodies_.size(); ++k)
+        for (std::size_t j = k + 1; j < bodies_.size(); ++j) {
+          const Eigen::Vector3d r = vec(bodies_[j]->getCenterOfMassPosition()) - vec(bodies_[k]->getCenterOfMassPosition());
+          const Eigen::Vector3d f = s_.gravitation * s_.links[k].mass * s_.links[j].mass / (r.norm() * r.squaredNorm()) * r;
+          bodies_[k]->applyCentralForce(bt(f));
+          bodies_[j]->applyCentralForce(bt(Eigen::Vector3d(-f)));
+        }
+    world_->stepSimulation(h, 0);
+    for (std::size_t k = 0; k < bodies_.size(); ++k)
+      if (!vec(bodies_[k]->getCenterOfMassPosition()).allFinite() || !vec(bodies_[k]->getAngularVelocity()).allFinite())
+        throw non_finite_error(name_ + ": step " + std::to_string(steps_) + ": body " + std::to_string(k) +
+                               "'s state is not finite");
+  }
+
   scenario s_;
   std::string name_;
   std::unique_ptr<btDefaultCollisionConfiguration> config_;
@@ -120,6 +213,8 @@ class run final : public engine_run {
   std::unique_ptr<btCollisionShape> shape_;
   std::unique_ptr<btRigidBody> body_;
   std::unique_ptr<btTypedConstraint> joint_;
+  std::vector<std::unique_ptr<btRigidBody>> bodies_;
+  std::vector<std::unique_ptr<btTypedConstraint>> joints_;
   long long steps_ = 0;
 };
 /// A jointed scenario as one btMultiBody link on a fixed base (Featherstone's articulated
@@ -127,8 +222,8 @@ class run final : public engine_run {
 class multibody_run final : public engine_run {
  public:
   explicit multibody_run(const scenario& s) : s_(s) {
-    if (s.joint == joint_kind::free)
-      throw scenario_refused(std::string(name) + ": " + s.name + " is a free body; this adapter builds joints only");
+    if (s.structure == body_structure::free_bodies || (s.structure == body_structure::one_body && s.joint == joint_kind::free))
+      throw scenario_refused(std::string(name) + ": " + s.name + " has free bodies; this adapter builds joints only");
     config_ = std::make_unique<btDefaultCollisionConfiguration>();
     dispatcher_ = std::make_unique<btCollisionDispatcher>(config_.get());
     broadphase_ = std::make_unique<btDbvtBroadphase>();
@@ -136,6 +231,10 @@ class multibody_run final : public engine_run {
     world_ = std::make_unique<btMultiBodyDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                                          config_.get());
     world_->setGravity(btVector3(0, 0, -s.gravity));
+    if (s.structure == body_structure::chain) {
+      build_chain(s);
+      return;
+    }
     body_ = std::make_unique<btMultiBody>(1, 1, btVector3(1, 1, 1), true, false);
     const btQuaternion none(0, 0, 0, 1);
     if (s.joint == joint_kind::hinge_y) {
@@ -164,6 +263,8 @@ class multibody_run final : public engine_run {
     body_->updateCollisionObjectWorldTransforms(scratch_q_, scratch_m_);
   }
   ~multibody_run() override {
+    if (loop_) world_->removeMultiBodyConstraint(loop_.get());
+    for (auto& c : colliders_) world_->removeCollisionObject(c.get());
     if (body_) world_->removeMultiBody(body_.get());
   }
   multibody_run(const multibody_run&) = delete;
@@ -175,12 +276,34 @@ class multibody_run final : public engine_run {
     ++steps_;
     world_->stepSimulation(h, 0);
     const body_reading r = read();
-    if (!r.position.allFinite() || !r.omega.allFinite())
+    bool finite = r.position.allFinite() && r.omega.allFinite();
+    for (const body_frame& f : r.links) finite = finite && f.position.allFinite() && f.omega.allFinite();
+    if (!finite)
       throw non_finite_error(std::string(name) + ": step " + std::to_string(steps_) + ": the link's state is not finite");
   }
 
   body_reading read() const override {
     body_reading r;
+    if (s_.structure == body_structure::chain) {
+      const int n = body_->getNumLinks();
+      btAlignedObjectArray<btVector3> omega, v;
+      omega.resize(n + 1);
+      v.resize(n + 1);
+      body_->compTreeLinkVelocities(&omega[0], &v[0]);  // in each link's frame, at its centre
+      r.joint_q.resize(n);
+      r.joint_v.resize(n);
+      for (int i = 0; i < n; ++i) {
+        body_frame f;
+        f.rotation = mat(body_->localFrameToWorld(i, btMatrix3x3::getIdentity()));
+        f.position = vec(body_->localPosToWorld(i, btVector3(0, 0, 0)));
+        f.omega = f.rotation * vec(omega[i + 1]);
+        f.velocity = f.rotation * vec(v[i + 1]);
+        r.links.push_back(f);
+        r.joint_q(i) = body_->getJointPos(i);
+        r.joint_v(i) = body_->getJointVel(i);
+      }
+      return r;
+    }
     r.rotation = mat(body_->localFrameToWorld(0, btMatrix3x3::getIdentity()));
     r.position = vec(body_->localPosToWorld(0, btVector3(0, 0, 0)));  // the link's frame is at its centre
     // The link's angular velocity from Bullet's own kinematics, in the link's frame.
@@ -200,7 +323,50 @@ class multibody_run final : public engine_run {
   static constexpr const char* name = "bullet::multibody";
 
  private:
+  /// A chain: link i revolute about y on link i - 1 (the fixed base for link 0), the
+  /// frames aligned at zero angle; a loop as a btMultiBodyPoint2Point of the last link's
+  /// point to its world anchor.
+  void build_chain(const scenario& s) {
+    const int n = static_cast<int>(s.links.size());
+    body_ = std::make_unique<btMultiBody>(n, 1, btVector3(1, 1, 1), true, false);
+    const btQuaternion none(0, 0, 0, 1);
+    for (int i = 0; i < n; ++i) {
+      const link& l = s.links[std::size_t(i)];
+      const Eigen::Vector3d from_parent = i == 0 ? l.hinge : Eigen::Vector3d(l.hinge - s.links[std::size_t(i - 1)].com);
+      body_->setupRevolute(i, l.mass, bt(l.inertia), i - 1, none, btVector3(0, 1, 0), bt(from_parent), bt(l.com), true);
+    }
+    body_->finalizeMultiDof();
+    body_->setLinearDamping(0);
+    body_->setAngularDamping(0);
+    body_->setCanSleep(false);
+    world_->addMultiBody(body_.get());
+    for (int i = 0; i < n; ++i) {
+      body_->setJointPos(i, s.links[std::size_t(i)].angle0);
+      body_->setJointVel(i, s.links[std::size_t(i)].rate0);
+    }
+    // A collider per link (colliding with nothing): btMultiBodyDynamicsWorld hands a
+    // multibody constraint to its solver through the island of its link's collider.
+    shape_ = std::make_unique<btSphereShape>(0.01);
+    for (int i = 0; i < n; ++i) {
+      colliders_.push_back(std::make_unique<btMultiBodyLinkCollider>(body_.get(), i));
+      btMultiBodyLinkCollider& c = *colliders_.back();
+      c.setCollisionShape(shape_.get());
+      world_->addCollisionObject(&c, 1, 0);
+      body_->getLink(i).m_collider = &c;
+    }
+    body_->updateCollisionObjectWorldTransforms(scratch_q_, scratch_m_);
+    if (s.loop) {
+      loop_ = std::make_unique<btMultiBodyPoint2Point>(body_.get(), n - 1, nullptr,
+                                                       bt(Eigen::Vector3d(s.loop->point - s.links.back().com)),
+                                                       bt(s.loop->anchor));
+      world_->addMultiBodyConstraint(loop_.get());
+    }
+  }
+
   scenario s_;
+  std::unique_ptr<btCollisionShape> shape_;
+  std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;
+  std::unique_ptr<btMultiBodyPoint2Point> loop_;
   std::unique_ptr<btDefaultCollisionConfiguration> config_;
   std::unique_ptr<btCollisionDispatcher> dispatcher_;
   std::unique_ptr<btBroadphaseInterface> broadphase_;
@@ -268,14 +434,17 @@ std::vector<engine_integrator> integrators() {
                "; Bullet states no order";
     const gyroscopic_mode* mode = &g;
     e.start = [mode](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, *mode); };
+    e.multibody = true;
     out.push_back(std::move(e));
   }
   engine_integrator m;
   m.name = multibody_run::name;
-  m.origin = "Bullet " + version() + " (bullet-float64), btMultiBody with one link on a fixed base (setupRevolute "
-             "for a hinge, setupSpherical for a ball joint; damping 0) in a btMultiBodyDynamicsWorld, "
-             "stepSimulation(h, 0); Bullet states no order; free bodies refused";
+  m.origin = "Bullet " + version() + " (bullet-float64), btMultiBody on a fixed base (setupRevolute "
+             "for a hinge, setupSpherical for a ball joint, a chain of revolute links, a loop closed by "
+             "btMultiBodyPoint2Point; damping 0) in a btMultiBodyDynamicsWorld, stepSimulation(h, 0); Bullet states "
+             "no order; free bodies refused";
   m.start = [](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<multibody_run>(s); };
+  m.multibody = true;
   out.push_back(std::move(m));
   return out;
 }

@@ -67,6 +67,26 @@ class run final : public engine_run {
       b.omega0[i] = s.omega0(i);
       for (int j = 0; j < 3; ++j) b.rotation0[3 * i + j] = s.rotation0(i, j);
     }
+    b.structure = s.structure == body_structure::chain ? 1 : s.structure == body_structure::free_bodies ? 2 : 0;
+    for (const link& l : s.links) {
+      bridge::setup::link k;
+      k.mass = l.mass;
+      k.angle0 = l.angle0;
+      k.rate0 = l.rate0;
+      for (int i = 0; i < 3; ++i) {
+        k.inertia[i] = l.inertia(i);
+        k.com[i] = l.com(i);
+        k.hinge[i] = l.hinge(i);
+        k.position0[i] = l.position0(i);
+        k.velocity0[i] = l.velocity0(i);
+      }
+      b.links.push_back(k);
+    }
+    if (s.loop) {
+      b.loop = true;
+      for (int i = 0; i < 3; ++i) b.loop_point[i] = s.loop->point(i), b.loop_anchor[i] = s.loop->anchor(i);
+    }
+    b.gravitation = s.gravitation;
     try {
       model_ = std::make_unique<bridge::model>(b);
     } catch (const bridge::refused& e) {
@@ -92,6 +112,19 @@ class run final : public engine_run {
   body_reading read() const override {
     const bridge::reading r = model_->read();
     body_reading o;
+    for (const bridge::frame& f : r.links) {
+      body_frame b;
+      b.rotation = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(f.rotation);
+      b.omega = Eigen::Map<const Eigen::Vector3d>(f.omega_world);
+      b.position = Eigen::Map<const Eigen::Vector3d>(f.position);
+      b.velocity = Eigen::Map<const Eigen::Vector3d>(f.velocity);
+      o.links.push_back(b);
+    }
+    if (!r.joint_q.empty()) {
+      o.joint_q = Eigen::Map<const Eigen::VectorXd>(r.joint_q.data(), Eigen::Index(r.joint_q.size()));
+      o.joint_v = Eigen::Map<const Eigen::VectorXd>(r.joint_u.data(), Eigen::Index(r.joint_u.size()));
+    }
+    if (!r.links.empty()) return o;
     o.rotation = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(r.rotation);
     o.omega = Eigen::Map<const Eigen::Vector3d>(r.omega_world);
     o.position = Eigen::Map<const Eigen::Vector3d>(r.position);
@@ -144,6 +177,7 @@ std::vector<engine_integrator> integrators() {
     // error is O(h^2). The words allow both readings.
     if (std::string(d.name) == "Verlet") e.declared.order_readings = {order_reading::local_error};
     e.start = [i](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, i); };
+    e.multibody = true;
     out.push_back(std::move(e));
   }
   return out;

@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace mechcheck::audit::simbody_bridge {
 
@@ -27,6 +28,24 @@ struct setup {
   double position0[3] = {0, 0, 0}, velocity0[3] = {0, 0, 0};  ///< centre of mass
   double omega0[3] = {0, 0, 0};                                ///< world frame
   int integrator = 0;             ///< index into the list below
+  /// Multibody scenarios (engines.hpp's links, loop and gravitation): structure 1 a chain
+  /// of pins about y, 2 free bodies under their mutual gravitation; 0 the one body above.
+  struct link {
+    double mass = 1, inertia[3] = {1, 1, 1}, com[3] = {0, 0, 0}, hinge[3] = {0, 0, 0};
+    double angle0 = 0, rate0 = 0, position0[3] = {0, 0, 0}, velocity0[3] = {0, 0, 0};
+  };
+  int structure = 0;
+  std::vector<link> links;
+  bool loop = false;
+  double loop_point[3] = {0, 0, 0}, loop_anchor[3] = {0, 0, 0};
+  double gravitation = 0;
+};
+
+/// One body's frame.
+struct frame {
+  double rotation[9];     ///< body to world, row-major
+  double omega_world[3];  ///< angular velocity in the world frame
+  double position[3], velocity[3];  ///< of the centre of mass
 };
 
 struct reading {
@@ -35,6 +54,8 @@ struct reading {
   double position[3], velocity[3];  ///< of the centre of mass
   bool pin = false;       ///< a pin: q and u below are its angle and rate
   double q = 0, u = 0;
+  std::vector<frame> links;  ///< multibody scenarios: every body's frame
+  std::vector<double> joint_q, joint_u;  ///< a chain: its pins' angles and rates
 };
 
 /// Principal moments of a shape by Simbody's UnitInertia helpers (sphere, brick,
