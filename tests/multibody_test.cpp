@@ -275,4 +275,32 @@ TEST(multibody, ode_steps_chains_in_body_coordinates_at_first_order) {
 }
 #endif
 
+#ifdef MECHCHECK_HAVE_DART
+TEST(multibody, dart_steps_at_first_order_refuses_a_negative_step_and_ends_a_diverged_run_with_a_typed_error) {
+  for (const auto& e : audit::engines_found()) {
+    if (e.name != "dart::World") continue;
+    auto opt = on("double_pendulum");
+    opt.max_study_steps = audit::engine_options{}.max_study_steps;
+    const auto a = audit::audit_engine(e, opt);
+    ASSERT_EQ(a.scenarios.size(), 1u);
+    EXPECT_EQ(a.scenarios[0].readout, "the engine's joint coordinates");
+    EXPECT_NEAR(a.scenarios[0].global.fit.value, 1, 0.1);
+    const auto all = audit::scenarios();
+    // World::setTimeStep ignores a negative step (and would step forward): refused.
+    auto run = e.start(named(all, "pendulum_small"));
+    EXPECT_THROW(run->step(-0.01), domain_error);
+    // Five links at h = 0.05 diverge; DART would abort the process on the next frame it
+    // computes: the step that diverged is a typed error instead.
+    run = e.start(named(all, "chain5"));
+    long long steps = 0;
+    try {
+      for (; steps < 1000000; ++steps) run->step(0.05);
+      ADD_FAILURE() << "no divergence in " << steps << " steps";
+    } catch (const non_finite_error& ex) {
+      EXPECT_NE(std::string(ex.what()).find("diverged"), std::string::npos) << ex.what();
+    }
+  }
+}
+#endif
+
 }  // namespace multibody_test

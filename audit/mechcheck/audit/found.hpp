@@ -2,8 +2,8 @@
 /// The adaptive drivers and engine integrators of the third-party adapters a binary is
 /// built with: each adapter's list where its macro is defined (MECHCHECK_HAVE_GSL,
 /// MECHCHECK_HAVE_ARKODE, MECHCHECK_HAVE_MUJOCO, MECHCHECK_HAVE_SIMBODY,
-/// MECHCHECK_HAVE_BULLET, MECHCHECK_HAVE_ODE -- the build defines them for the targets
-/// that link mechcheck::audit_gsl, _arkode, _mujoco, _simbody, _bullet, _ode). Boost.Odeint's
+/// MECHCHECK_HAVE_BULLET, MECHCHECK_HAVE_ODE, MECHCHECK_HAVE_DART -- the build defines them for
+/// the targets that link mechcheck::audit_gsl, _arkode, _mujoco, _simbody, _bullet, _ode, _dart). Boost.Odeint's
 /// drivers are always there.
 
 #include <vector>
@@ -28,6 +28,9 @@
 #ifdef MECHCHECK_HAVE_ODE
 #include "mechcheck/audit/ode_engine.hpp"
 #endif
+#ifdef MECHCHECK_HAVE_DART
+#include "mechcheck/audit/dart_engine.hpp"
+#endif
 
 namespace mechcheck::audit {
 
@@ -43,7 +46,7 @@ inline std::vector<adaptive_driver> drivers_found() {
   return all;
 }
 
-/// MuJoCo's, Simbody's, Bullet's and ODE's integrators, each where built.
+/// MuJoCo's, Simbody's, Bullet's, ODE's and DART's integrators, each where built.
 inline std::vector<engine_integrator> engines_found() {
   std::vector<engine_integrator> all;
 #ifdef MECHCHECK_HAVE_MUJOCO
@@ -57,6 +60,9 @@ inline std::vector<engine_integrator> engines_found() {
 #endif
 #ifdef MECHCHECK_HAVE_ODE
   for (auto& e : ode_engine::integrators()) all.push_back(std::move(e));
+#endif
+#ifdef MECHCHECK_HAVE_DART
+  for (auto& e : dart_engine::integrators()) all.push_back(std::move(e));
 #endif
   return all;
 }
@@ -75,6 +81,9 @@ inline std::vector<engine_shapes> shapes_found() {
 #endif
 #ifdef MECHCHECK_HAVE_ODE
   all.push_back(ode_engine::shapes());
+#endif
+#ifdef MECHCHECK_HAVE_DART
+  all.push_back(dart_engine::shapes());
 #endif
   return all;
 }

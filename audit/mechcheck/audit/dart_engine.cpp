@@ -1,0 +1,261 @@
+#include "mechcheck/audit/dart_engine.hpp"
+
+#include <dart/config.hpp>
+#include <dart/constraint/BallJointConstraint.hpp>
+#include <dart/constraint/ConstraintSolver.hpp>
+#include <dart/dynamics/BallJoint.hpp>
+#include <dart/dynamics/BodyNode.hpp>
+#include <dart/dynamics/BoxShape.hpp>
+#include <dart/dynamics/CapsuleShape.hpp>
+#include <dart/dynamics/ConeShape.hpp>
+#include <dart/dynamics/CylinderShape.hpp>
+#include <dart/dynamics/EllipsoidShape.hpp>
+#include <dart/dynamics/FreeJoint.hpp>
+#include <dart/dynamics/RevoluteJoint.hpp>
+#include <dart/dynamics/Skeleton.hpp>
+#include <dart/dynamics/SphereShape.hpp>
+#include <dart/simulation/World.hpp>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+
+namespace mechcheck::audit::dart_engine {
+
+namespace {
+using namespace dart::dynamics;
+
+Inertia inertia_of(double mass, const Eigen::Vector3d& com, const Eigen::Vector3d& moments) {
+  return Inertia(mass, com, Eigen::Matrix3d(moments.asDiagonal()));
+}
+
+body_frame frame_of(const BodyNode& b) {
+  body_frame f;
+  f.rotation = b.getTransform().linear();
+  f.position = b.getCOM();
+  f.velocity = b.getCOMLinearVelocity();
+  f.omega = b.getAngularVelocity();
+  return f;
+}
+
+/// A Skeleton of one body on a free joint at a frame (its origin the centre of mass).
+BodyNode* free_body(const SkeletonPtr& skel, double mass, const Eigen::Vector3d& moments, const body_frame& f) {
+  auto [joint, body] = skel->createJointAndBodyNodePair<FreeJoint>();
+  body->setInertia(inertia_of(mass, Eigen::Vector3d::Zero(), moments));
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.linear() = f.rotation;
+  t.translation() = f.position;
+  joint->setPositions(FreeJoint::convertToPositions(t));
+  joint->setAngularVelocity(f.omega);
+  joint->setLinearVelocity(f.velocity);
+  return body;
+}
+
+class run final : public engine_run {
+ public:
+  explicit run(const scenario& s) : s_(s) {
+    world_ = dart::simulation::World::create("mechcheck");
+    world_->setGravity(Eigen::Vector3d(0, 0, -s.gravity));
+    switch (s.structure) {
+      case body_structure::one_body:
+        build_one(s);
+        break;
+      case body_structure::chain:
+        build_chain(s);
+        break;
+      case body_structure::free_bodies:
+        for (const link& l : s.links) {
+          body_frame f;
+          f.position = l.position0;
+          f.velocity = l.velocity0;
+          auto skel = Skeleton::create("body" + std::to_string(bodies_.size()));
+          bodies_.push_back(free_body(skel, l.mass, l.inertia, f));
+          add(skel);
+        }
+        break;
+    }
+  }
+
+  void step(double h) override {
+    if (!(h != 0 && std::isfinite(h))) throw domain_error(std::string(name) + ": the step must be finite and non-zero, got " + to_text(h));
+    // World::setTimeStep ignores a negative step with a warning and steps with the last
+    // one: refused here, as a step that would go the wrong way.
+    if (h < 0) throw domain_error(std::string(name) + ": DART's World::setTimeStep refuses a negative step (h = " + to_text(h) + ")");
+    ++steps_;
+    world_->setTimeStep(h);
+    add_forces();
+    try {
+      world_->step();
+    } catch (const std::exception& e) {
+      throw convergence_error(std::string(name) + ": step " + std::to_string(steps_) + ": DART: " + e.what());
+    }
+    // The joints' positions and velocities, not the bodies' frames: DART (built with its
+    // assertions) aborts the process when a frame is computed from a non-finite position,
+    // and its exponential map squares the angle (NaN past |q| = 1.3e154). A diverged state
+    // is caught here, before anything reads a transform.
+    constexpr double largest = 1e150;
+    for (const auto& skel : skeletons_) {
+      const Eigen::VectorXd q = skel->getPositions(), v = skel->getVelocities();
+      if (!q.allFinite() || !v.allFinite() || q.cwiseAbs().maxCoeff() > largest)
+        throw non_finite_error(std::string(name) + ": step " + std::to_string(steps_) + ": skeleton '" +
+                               skel->getName() + "' diverged (a joint position beyond 1e150 or not finite)");
+    }
+  }
+
+  body_reading read() const override {
+    body_reading r;
+    if (s_.structure == body_structure::one_body) {
+      static_cast<body_frame&>(r) = frame_of(*bodies_[0]);
+      if (s_.joint == joint_kind::hinge_y) {
+        r.joint_q = Eigen::VectorXd::Constant(1, joints_[0]->getPosition(0));
+        r.joint_v = Eigen::VectorXd::Constant(1, joints_[0]->getVelocity(0));
+      }
+      return r;
+    }
+    for (const BodyNode* b : bodies_) r.links.push_back(frame_of(*b));
+    if (s_.structure == body_structure::chain) {
+      r.joint_q.resize(Eigen::Index(joints_.size()));
+      r.joint_v.resize(Eigen::Index(joints_.size()));
+      for (std::size_t k = 0; k < joints_.size(); ++k)
+        r.joint_q(Eigen::Index(k)) = joints_[k]->getPosition(0), r.joint_v(Eigen::Index(k)) = joints_[k]->getVelocity(0);
+    }
+    return r;
+  }
+
+  static constexpr const char* name = "dart::World";
+
+ private:
+  void build_one(const scenario& s) {
+    auto skel = Skeleton::create("body");
+    if (s.joint == joint_kind::free) {
+      body_frame f;
+      f.rotation = s.rotation0;
+      f.position = s.position0;
+      f.velocity = s.velocity0;
+      f.omega = s.omega0;
+      bodies_.push_back(free_body(skel, s.mass, s.inertia, f));
+    } else if (s.joint == joint_kind::hinge_y) {
+      RevoluteJoint::Properties p;
+      p.mAxis = Eigen::Vector3d::UnitY();
+      auto [joint, body] = skel->createJointAndBodyNodePair<RevoluteJoint>(nullptr, p);
+      body->setInertia(inertia_of(s.mass, s.com, s.inertia));
+      joint->setPosition(0, std::atan2(s.rotation0(0, 2), s.rotation0(0, 0)));
+      joint->setVelocity(0, s.omega0(1));
+      bodies_.push_back(body);
+      joints_.push_back(joint);
+    } else {
+      auto [joint, body] = skel->createJointAndBodyNodePair<BallJoint>();
+      body->setInertia(inertia_of(s.mass, s.com, s.inertia));
+      joint->setPositions(BallJoint::convertToPositions(Eigen::Matrix3d(s.rotation0)));
+      joint->setVelocities(Eigen::Vector3d(s.rotation0.transpose() * s.omega0));  // in the body's frame
+      bodies_.push_back(body);
+    }
+    add(skel);
+  }
+
+  void build_chain(const scenario& s) {
+    auto skel = Skeleton::create("chain");
+    BodyNode* parent = nullptr;
+    for (std::size_t k = 0; k < s.links.size(); ++k) {
+      const link& l = s.links[k];
+      RevoluteJoint::Properties p;
+      p.mName = "hinge" + std::to_string(k);
+      p.mAxis = Eigen::Vector3d::UnitY();
+      p.mT_ParentBodyToJoint.translation() = l.hinge;  // the parent's frame: its own hinge at the origin
+      auto [joint, body] =
+          skel->createJointAndBodyNodePair<RevoluteJoint>(parent, p, BodyNode::AspectProperties("link" + std::to_string(k)));
+      body->setInertia(inertia_of(l.mass, l.com, l.inertia));
+      joint->setPosition(0, l.angle0);
+      joint->setVelocity(0, l.rate0);
+      bodies_.push_back(body);
+      joints_.push_back(joint);
+      parent = body;
+    }
+    add(skel);
+    if (s.loop) {
+      const Eigen::Vector3d anchor = bodies_.back()->getTransform() * s.loop->point;
+      world_->getConstraintSolver()->addConstraint(
+          std::make_shared<dart::constraint::BallJointConstraint>(bodies_.back(), anchor));
+    }
+  }
+
+  void add(const SkeletonPtr& skel) {
+    world_->addSkeleton(skel);
+    skeletons_.push_back(skel);
+  }
+
+  void add_forces() {
+    if (s_.central != 0) {
+      const Eigen::Vector3d x = bodies_[0]->getCOM();
+      bodies_[0]->addExtForce(-s_.mass * s_.central / (x.norm() * x.squaredNorm()) * x, s_.com);
+    }
+    if (s_.gravitation != 0)
+      for (std::size_t k = 0; k < bodies_.size(); ++k)
+        for (std::size_t j = k + 1; j < bodies_.size(); ++j) {
+          const Eigen::Vector3d r = bodies_[j]->getCOM() - bodies_[k]->getCOM();
+          const Eigen::Vector3d f = s_.gravitation * s_.links[k].mass * s_.links[j].mass / (r.norm() * r.squaredNorm()) * r;
+          bodies_[k]->addExtForce(f);
+          bodies_[j]->addExtForce(-f);
+        }
+  }
+
+  scenario s_;
+  dart::simulation::WorldPtr world_;
+  std::vector<SkeletonPtr> skeletons_;
+  std::vector<BodyNode*> bodies_;
+  std::vector<Joint*> joints_;
+  long long steps_ = 0;
+};
+}  // namespace
+
+std::string version() { return DART_VERSION; }
+
+std::vector<engine_integrator> integrators() {
+  engine_integrator e;
+  e.name = run::name;
+  e.origin = "DART " + version() + " (Debian libdart6.12), dart::simulation::World::step (World.hpp: \"Calculate the "
+             "dynamics and integrate the world for one step\"), World::setTimeStep(h) before each step; DART states no "
+             "order";
+  e.multibody = true;
+  e.start = [](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s); };
+  return {e};
+}
+
+engine_shapes shapes() {
+  engine_shapes e;
+  e.engine = "dart";
+  e.origin = "DART " + version() + ": BoxShape, SphereShape, CylinderShape, CapsuleShape (height of the cylindrical "
+             "part), ConeShape (about its geometric centre, ConeShape.hpp: \"at the center of geometric center\"; "
+             "moved to the centre of mass by m (h/4)^2 here) and EllipsoidShape (diameters) ::computeInertia";
+  e.moments = [](const shape& s) -> Eigen::Vector3d {
+    const double* z = s.size.data();
+    Eigen::Matrix3d i;
+    if (s.name == "box") {
+      i = BoxShape::computeInertia(s.size, s.mass);
+    } else if (s.name == "sphere") {
+      i = SphereShape::computeInertia(z[0], s.mass);
+    } else if (s.name == "cylinder") {
+      i = CylinderShape::computeInertia(z[0], z[1], s.mass);
+    } else if (s.name == "capsule") {
+      i = CapsuleShape::computeInertia(z[0], z[1], s.mass);
+    } else if (s.name == "cone") {
+      // Its documentation's reference point, the middle of the axis: the centre of mass is
+      // h/4 from it, so the transverse moments about the centre are m (h/4)^2 less.
+      i = ConeShape::computeInertia(z[0], z[1], s.mass);
+      const double d = z[1] / 4;
+      i(0, 0) -= s.mass * d * d;
+      i(1, 1) -= s.mass * d * d;
+    } else if (s.name == "ellipsoid") {
+      i = EllipsoidShape::computeInertia(Eigen::Vector3d(2 * s.size), s.mass);
+    } else {
+      throw scenario_refused("dart: DART " + version() + " has no inertia helper for a " + s.name);
+    }
+    return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(i).eigenvalues();
+  };
+  return e;
+}
+
+}  // namespace mechcheck::audit::dart_engine
