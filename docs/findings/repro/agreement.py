@@ -28,15 +28,15 @@ def load(name):
         return json.load(f)
 
 
-def engine(integrator):
-    for a in load("engines/engines.json")["integrators"]:
+def engine(integrator, report="engines/engines.json"):
+    for a in load(report)["integrators"]:
         if a["integrator"] == integrator:
             return a
     raise KeyError(f"engines.json: no integrator {integrator}")
 
 
-def engine_scenario(integrator, scenario):
-    for s in engine(integrator)["scenarios"]:
+def engine_scenario(integrator, scenario, report="engines/engines.json"):
+    for s in engine(integrator, report)["scenarios"]:
         if s["scenario"] == scenario:
             return s
     raise KeyError(f"engines.json: {integrator} has no scenario {scenario}")
@@ -111,6 +111,10 @@ CHECKS = [
     ("ode-quickstep", "QuickStep (160 iterations): the anchor after one step",
      lambda: repro("ode_quickstep_hinge", "quickstep_160_anchor_after_one_step"),
      lambda: engine_scenario("ode::quickstep/iterations_160", "pendulum_small")["constraint_first_step"]["position"], 1e-3, True),
+    ("bullet-multibody-loop", "the four-bar's loop closure after one step (links with colliders)",
+     lambda: repro("bullet_multibody_loop", "colliders_separation_after_one_step"),
+     lambda: engine_scenario("bullet::multibody", "four_bar", "engines-loop/engines.json")["constraint_first_step"]["loop"],
+     1e-3, True),
     ("arkode-cash", "CASH_5_2_4's error plateau on the oscillator",
      lambda: repro("arkode_cash_weights", "cash_5_2_4_error_n4096"),
      lambda: problem("double/audit.json", "arkode::ARKODE_CASH_5_2_4", "double", "oscillator")["global_order"]["stall"]["error"], 0.05, True),
