@@ -144,6 +144,11 @@ TEST(multibody, a_chains_start_frames_are_its_exact_start_and_keep_every_hinge) 
     // The same frames with link 1 moved by 1 mm: its hinge is open by 1 mm.
     r.links[1].position.x() += 1e-3;
     EXPECT_NEAR(audit::observe(s, r).constraint->position, 1e-3, 1e-12);
+    if (s.loop) {  // the last link moved by 1 mm: the loop is open by 1 mm
+      r.links[1].position.x() -= 1e-3;
+      r.links.back().position.z() += 1e-3;
+      EXPECT_NEAR(audit::observe(s, r).constraint->loop, 1e-3, 1e-12);
+    }
   }
 }
 
