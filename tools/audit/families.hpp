@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "mechcheck/audit/black_box.hpp"
 #include "mechcheck/audit/result.hpp"
 #include "mechcheck/audit/tableau_file.hpp"
 
@@ -21,6 +22,7 @@ struct request {
   /// SStolerances); 0: each adapter's default.
   double newton_tolerance = 0;
   std::vector<audit::tableau_file> tableaus;  ///< --tableau files, read and validated
+  std::vector<audit::black_box> exec_steppers;  ///< --exec-stepper children (exec.hpp)
 };
 
 /// What a family returns: the names it has (matching) and their audits.
@@ -42,5 +44,7 @@ family_result arkode_mpfr50(const request& r);
 /// The --tableau files' steppers (family_tableau.cpp).
 family_result tableau_double(const request& r);
 family_result tableau_mpfr50(const request& r);
+/// The --exec-stepper children's steppers (family_tableau.cpp), in double.
+family_result exec_double(const request& r);
 
 }  // namespace mechcheck::audit_tool

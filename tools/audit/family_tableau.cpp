@@ -1,6 +1,7 @@
 // Tableaus from files (--tableau FILE): each one's stepper through mechcheck's Runge-Kutta
 // stepper, named tableau::<name> (and tableau::<name>/embedding for a file with bhat),
-// declaring what the file declares.
+// declaring what the file declares; and the steppers of --exec-stepper children.
+#include "mechcheck/audit/black_box.hpp"
 #include "mechcheck/audit/tableau.hpp"
 #include "mechcheck/audit/tableau_file.hpp"
 #include "run_family.hpp"
@@ -33,5 +34,10 @@ std::vector<audit::stepper_under_audit<T>> steppers_of(const std::vector<audit::
 }  // namespace
 
 family_result tableau_double(const request& r) { return run_family(steppers_of<double>(r.tableaus), r); }
+family_result exec_double(const request& r) {
+  std::vector<audit::stepper_under_audit<double>> steppers;
+  for (const auto& box : r.exec_steppers) steppers.push_back(audit::black_box_stepper(box));
+  return run_family(steppers, r);
+}
 family_result tableau_mpfr50(const request& r) { return run_family(steppers_of<mpfr50>(r.tableaus), r); }
 }  // namespace mechcheck::audit_tool

@@ -1,6 +1,7 @@
 // mechcheck-audit: audits the library's steppers and Boost.Odeint's on the reference
 // problems, prints a table and writes audit.json, audit.md and SVG plots.
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -15,6 +16,7 @@
 #include "mechcheck/audit/found.hpp"
 #include "mechcheck/audit/problems/classic.hpp"
 #include "mechcheck/audit/report.hpp"
+#include "mechcheck/audit/exec.hpp"
 #include "mechcheck/audit/tableau_file.hpp"
 
 namespace {
@@ -45,6 +47,14 @@ std::vector<std::string> expanded(const std::vector<std::string>& names) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Everything after "--" is a child's command (--exec-stepper), passed as given.
+  std::vector<std::string> child_command;
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--") {
+      for (int j = i + 1; j < argc; ++j) child_command.emplace_back(argv[j]);
+      argc = i;
+      break;
+    }
   CLI::App app{"mechcheck-audit: order, symplecticity, time symmetry, long-time energy "
                "behaviour, first integrals and cost of one-step integrators, against what "
                "they declare"};
@@ -110,7 +120,20 @@ int main(int argc, char** argv) {
   long long engine_long_run_steps = 100000;
   app.add_option("--engine-long-run-steps", engine_long_run_steps, "steps of the engines' long run (0: none)")
       ->check(CLI::Range(0LL, 100000000LL));
+  bool exec_stepper = false;
+  double exec_timeout = 30;
+  app.add_flag("--exec-stepper", exec_stepper,
+               "audit the stepper a child program serves (docs/protocol.md): the command follows \"--\", "
+               "run from its argument vector (no shell); in double");
+  app.add_option("--exec-timeout", exec_timeout, "seconds a child may take to reply (default 30)")
+      ->check(CLI::Range(1e-3, 1e6));
   CLI11_PARSE(app, argc, argv);
+  if (exec_stepper != !child_command.empty()) {
+    std::cerr << "mechcheck-audit: " << (exec_stepper ? "--exec-stepper needs the child's command after \"--\""
+                                                       : "a command after \"--\" needs --exec-stepper")
+              << "\n";
+    return 1;
+  }
   problems = expanded(problems);
   long_run_problems = expanded(long_run_problems);
 
@@ -148,6 +171,23 @@ int main(int argc, char** argv) {
     if (!list) std::cout << audit::describe(analyses.back()) << "\n";
   }
   if (!tableau_files.empty()) request.patterns.push_back("tableau::*");  // alone: only them
+  std::vector<audit::exec_target> exec_targets;
+  if (exec_stepper) {
+    audit::exec_options eo;
+    eo.timeout = exec_timeout;
+    try {
+      exec_targets.push_back(audit::exec_stepper(child_command, eo));
+    } catch (const error& e) {
+      std::cerr << "mechcheck-audit: " << e.what() << "\n";
+      return 1;
+    }
+    request.exec_steppers.push_back(exec_targets.back().box);
+    request.patterns.push_back("exec::*");  // alone: only the child's
+    if (std::find(tiers.begin(), tiers.end(), "double") == tiers.end()) {
+      std::cerr << "mechcheck-audit: --exec-stepper runs in double; -t mpfr50 alone has nothing to run\n";
+      return 1;
+    }
+  }
   if (!engine_patterns.empty()) {
     std::vector<audit::engine_integrator> engines = audit::engines_found();
     std::erase_if(engines, [&](const audit::engine_integrator& e) {
@@ -235,6 +275,7 @@ int main(int argc, char** argv) {
     std::vector<audit_tool::family_result> families;
     if (tier == "double") {
       families.push_back(audit_tool::tableau_double(request));
+      families.push_back(audit_tool::exec_double(request));
       families.push_back(audit_tool::builtin_double(request));
       families.push_back(audit_tool::odeint_double(request));
 #ifdef MECHCHECK_HAVE_GSL
@@ -292,5 +333,13 @@ int main(int argc, char** argv) {
         status = 2;
         break;
       }
+  // A child that failed (crashed, hung, broke the protocol): its runs are failed runs of
+  // the report, and the command says so by its status.
+  for (const auto& t : exec_targets)
+    if (t.failures() > 0) {
+      std::cerr << "mechcheck-audit: " << t.box.name << ": " << t.failures() << " children failed; the last: "
+                << t.last_failure() << "\n";
+      status = 3;
+    }
   return status;
 }

@@ -1,0 +1,162 @@
+// Steppers served by a child process (audit/exec.hpp, docs/protocol.md): a child that keeps
+// the protocol is audited like any stepper (velocity Verlet confirmed, explicit Euler that
+// claims order 2 contradicted), and a child that crashes, hangs, exits, breaks the protocol
+// or returns a NaN ends its run with a typed error naming the command, the request and what
+// came back, with nothing left running.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+
+#include <chrono>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "mechcheck/audit/black_box.hpp"
+#include "mechcheck/audit/exec.hpp"
+
+#ifndef MECHCHECK_EXEC_CHILD
+#error "the build defines MECHCHECK_EXEC_CHILD, the path of tests/exec/child.cpp's program"
+#endif
+
+namespace exec_test {
+using namespace mechcheck;
+namespace audit = mechcheck::audit;
+using outcome = audit::verdict::outcome;
+
+std::vector<std::string> child(const std::string& mode) { return {MECHCHECK_EXEC_CHILD, mode}; }
+
+/// y' = (y1, -y0): the oscillator as C callbacks.
+int oscillator(double, const double* y, double* f, void*) {
+  f[0] = y[1];
+  f[1] = -y[0];
+  return 0;
+}
+audit::ode_system oscillator_system() {
+  audit::ode_system s;
+  s.dimension = 2;
+  s.rhs = &oscillator;
+  return s;
+}
+
+audit::audit_options few_problems() {
+  audit::audit_options o;
+  o.problems = {"oscillator"};
+  o.long_run_problems = {};
+  o.long_run_steps = 0;
+  return o;
+}
+
+TEST(exec, a_verlet_child_is_audited_like_a_stepper_and_keeps_its_claims) {
+  const auto target = audit::exec_stepper(child("verlet"));
+  EXPECT_EQ(target.box.name, "exec::test_child/verlet");
+  ASSERT_TRUE(target.box.declared.order);
+  EXPECT_EQ(*target.box.declared.order, 2);
+  const auto a = audit::audit_stepper(audit::black_box_stepper(target.box), audit::reference_problems<double>(), few_problems());
+  ASSERT_TRUE(a.find("order") && a.find("symplectic"));
+  EXPECT_EQ(a.find("order")->result, outcome::confirmed) << a.find("order")->evidence;
+  EXPECT_NEAR(std::stod(a.find("order")->measured), 2.0, 0.1);
+  EXPECT_NE(a.find("symplectic")->result, outcome::contradicted) << a.find("symplectic")->evidence;
+  EXPECT_EQ(target.failures(), 0) << target.last_failure();
+}
+
+TEST(exec, a_child_that_claims_too_much_is_contradicted) {
+  const auto target = audit::exec_stepper(child("euler_says_2"));
+  const auto a = audit::audit_stepper(audit::black_box_stepper(target.box), audit::reference_problems<double>(), few_problems());
+  ASSERT_TRUE(a.find("order"));
+  EXPECT_EQ(a.find("order")->result, outcome::contradicted) << a.find("order")->evidence;
+}
+
+/// One step of a misbehaving child: the exec_error's message.
+std::string first_step_error(const std::string& mode, double timeout = 30) {
+  audit::exec_options o;
+  o.timeout = timeout;
+  const auto target = audit::exec_stepper(child(mode), o);
+  const audit::ode_system ode = oscillator_system();
+  void* ctx = target.box.create(ode);
+  double y[2] = {1, 0};
+  std::string message;
+  try {
+    target.box.step(y, 0, 0.1, ctx);
+  } catch (const audit::exec_error& e) {
+    message = e.what();
+  }
+  target.box.destroy(ctx);
+  EXPECT_EQ(target.failures(), message.empty() ? 0 : 1) << mode;
+  return message;
+}
+
+TEST(exec, a_crash_an_exit_and_a_broken_reply_are_typed_errors_naming_the_command_and_the_request) {
+  const std::string crash = first_step_error("crash");
+  EXPECT_NE(crash.find("exec '" MECHCHECK_EXEC_CHILD " crash'"), std::string::npos) << crash;
+  EXPECT_NE(crash.find("step of run 1 at t = 0, h = 0.1"), std::string::npos) << crash;
+  EXPECT_NE(crash.find("killed by signal 6"), std::string::npos) << crash;
+  const std::string exit = first_step_error("exit");
+  EXPECT_NE(exit.find("exited with status 3"), std::string::npos) << exit;
+  EXPECT_NE(exit.find("its standard error ends: \"giving up\""), std::string::npos) << exit;
+  EXPECT_NE(first_step_error("malformed").find("the reply is not JSON: \"not json\""), std::string::npos);
+  EXPECT_NE(first_step_error("oversized").find("longer than 1048576 bytes"), std::string::npos);
+  EXPECT_NE(first_step_error("nan").find("y[0] is not finite"), std::string::npos);
+}
+
+TEST(exec, a_hung_child_is_stopped_at_its_timeout_with_its_group) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string hang = first_step_error("hang", 0.5);
+  EXPECT_NE(hang.find("no reply within 0.5 s"), std::string::npos) << hang;
+  EXPECT_NE(hang.find("hanging at the first step"), std::string::npos) << hang;
+  // The grandchild it started is killed with it: its process is gone (or a zombie).
+  const std::string g = first_step_error("grandchild", 0.5);
+  const auto at = g.find("pids ");
+  ASSERT_NE(at, std::string::npos) << g;
+  std::istringstream pids(g.substr(at + 5));
+  int parent = 0, grandchild = 0;
+  pids >> parent >> grandchild;
+  ASSERT_GT(grandchild, 0) << g;
+  for (const int pid : {parent, grandchild}) {
+    bool gone = ::kill(pid, 0) != 0;
+    if (!gone) {  // a zombie until its new parent reaps it
+      std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+      std::string text;
+      std::getline(stat, text);
+      const auto close = text.rfind(')');
+      gone = close != std::string::npos && text.size() > close + 2 && text[close + 2] == 'Z';
+    }
+    EXPECT_TRUE(gone) << "process " << pid << " is still running";
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+}
+
+TEST(exec, a_bad_command_or_handshake_is_refused_before_any_run) {
+  EXPECT_THROW(audit::exec_stepper({}), domain_error);
+  EXPECT_THROW(audit::exec_stepper({"/nonexistent/mechcheck-child"}), audit::exec_error);
+  try {
+    audit::exec_stepper(child("version_2"));
+    ADD_FAILURE() << "a version-2 handshake was accepted";
+  } catch (const audit::exec_error& e) {
+    EXPECT_NE(std::string(e.what()).find("protocol version 2; this audit speaks version 1"), std::string::npos) << e.what();
+  }
+  audit::exec_options o;
+  o.timeout = 0;
+  EXPECT_THROW(audit::exec_stepper(child("rk4"), o), domain_error);
+}
+
+TEST(exec, a_failing_child_is_restarted_then_refused) {
+  audit::exec_options o;
+  o.restarts = 1;
+  const auto target = audit::exec_stepper(child("crash"), o);
+  const audit::ode_system ode = oscillator_system();
+  double y[2] = {1, 0};
+  for (int run = 0; run < 2; ++run) {
+    void* ctx = target.box.create(ode);
+    EXPECT_THROW(target.box.step(y, 0, 0.1, ctx), audit::exec_error);
+    target.box.destroy(ctx);
+  }
+  try {
+    target.box.create(ode);
+    ADD_FAILURE() << "a third child was started";
+  } catch (const audit::exec_error& e) {
+    EXPECT_NE(std::string(e.what()).find("not restarted after 2 failures"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace exec_test
