@@ -11,8 +11,10 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include "mechcheck/audit/black_box.hpp"
+#include "mechcheck/audit/drivers.hpp"
 #include "mechcheck/audit/exec.hpp"
 
 #ifndef MECHCHECK_EXEC_CHILD
@@ -112,16 +114,23 @@ TEST(exec, a_hung_child_is_stopped_at_its_timeout_with_its_group) {
   int parent = 0, grandchild = 0;
   pids >> parent >> grandchild;
   ASSERT_GT(grandchild, 0) << g;
+  // SIGKILL is delivered asynchronously: each is gone (or a zombie until its new parent
+  // reaps it) within a second.
+  const auto gone = [](int pid) {
+    if (::kill(pid, 0) != 0) return true;
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string text;
+    std::getline(stat, text);
+    const auto close = text.rfind(')');
+    return close != std::string::npos && text.size() > close + 2 && text[close + 2] == 'Z';
+  };
   for (const int pid : {parent, grandchild}) {
-    bool gone = ::kill(pid, 0) != 0;
-    if (!gone) {  // a zombie until its new parent reaps it
-      std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
-      std::string text;
-      std::getline(stat, text);
-      const auto close = text.rfind(')');
-      gone = close != std::string::npos && text.size() > close + 2 && text[close + 2] == 'Z';
+    bool dead = gone(pid);
+    for (int i = 0; i < 100 && !dead; ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      dead = gone(pid);
     }
-    EXPECT_TRUE(gone) << "process " << pid << " is still running";
+    EXPECT_TRUE(dead) << "process " << pid << " is still running";
   }
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
 }
@@ -157,6 +166,29 @@ TEST(exec, a_failing_child_is_restarted_then_refused) {
   } catch (const audit::exec_error& e) {
     EXPECT_NE(std::string(e.what()).find("not restarted after 2 failures"), std::string::npos) << e.what();
   }
+}
+
+TEST(exec, a_driver_child_is_audited_against_its_tolerances_and_its_failures_are_failed_runs) {
+  const auto target = audit::exec_driver(child("driver"));
+  EXPECT_EQ(target.driver.name, "exec::test_child/driver");
+  audit::driver_options o;
+  o.problems = {"oscillator"};
+  o.tolerances = {1e-4, 1e-6, 1e-8};
+  const auto a = audit::audit_driver(target.driver, o);
+  ASSERT_EQ(a.problems.size(), 1u);
+  for (const auto& p : a.problems[0].points) {
+    EXPECT_TRUE(p.failure.empty()) << p.failure;
+    EXPECT_GT(p.accepted, 0);
+  }
+  EXPECT_EQ(target.failures(), 0) << target.last_failure();
+  // A driver that reports failure: each run a failed point naming it; the child lives on.
+  const auto failing = audit::exec_driver(child("driver_fails"));
+  const auto b = audit::audit_driver(failing.driver, o);
+  for (const auto& p : b.problems[0].points)
+    EXPECT_NE(p.failure.find("the driver failed: library X returned -4"), std::string::npos) << p.failure;
+  EXPECT_EQ(failing.failures(), 0);
+  // A stepper is not a driver.
+  EXPECT_THROW(audit::exec_driver(child("rk4")), audit::exec_error);
 }
 
 }  // namespace exec_test

@@ -12,8 +12,11 @@
 //   oversized    replies a 2 MiB line               nan        replies a NaN state
 //   version_2    its handshake says protocol version 2
 //   grandchild   starts a grandchild that sleeps, then hangs (both must be killed)
+//   driver       an adaptive driver (kind "driver"): RK4 at h = tol^(1/4) (t1 - t0)
+//   driver_fails a driver that reports a failure for every integration
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -89,7 +92,8 @@ vec step(double t, double h, vec y) {
 
 int main(int argc, char** argv) {
   mode = argc > 1 ? argv[1] : "rk4";
-  json hello = {{"protocol", "mechcheck"}, {"version", mode == "version_2" ? 2 : 1}, {"kind", "stepper"},
+  const bool driver = mode == "driver" || mode == "driver_fails";
+  json hello = {{"protocol", "mechcheck"}, {"version", mode == "version_2" ? 2 : 1}, {"kind", driver ? "driver" : "stepper"},
                 {"name", "test_child/" + mode}, {"origin", "tests/exec/child.cpp"}};
   if (mode == "verlet")
     hello["claims"] = {{"order", 2}, {"symplectic", true}, {"symmetric", true}},
@@ -102,6 +106,24 @@ int main(int argc, char** argv) {
     const std::string op = r.value("op", "");
     if (op == "start" || op == "end") {
       send({{"ok", true}});
+      continue;
+    }
+    if (op == "integrate" && driver) {
+      // RK4 at h = tol^(1/4) (t1 - t0): a global error of order tol; or a reported failure.
+      if (mode == "driver_fails") {
+        send({{"error", "library X returned -4"}});
+        continue;
+      }
+      const double t0 = num(r["t0"]), t1 = num(r["t1"]), tol = num(r["tolerance"]);
+      const long n = std::max(1L, static_cast<long>(std::ceil(1 / std::pow(tol, 0.25))));
+      vec y = nums(r["y"]);
+      const double h = (t1 - t0) / static_cast<double>(n);
+      try {
+        for (long i = 0; i < n; ++i) y = step(t0 + static_cast<double>(i) * h, h, y);
+        send({{"y", hexes(y)}, {"accepted", n}, {"rejected", 0}});
+      } catch (const std::exception& e) {
+        send({{"error", e.what()}});
+      }
       continue;
     }
     if (op != "step") {

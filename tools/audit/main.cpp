@@ -120,17 +120,24 @@ int main(int argc, char** argv) {
   long long engine_long_run_steps = 100000;
   app.add_option("--engine-long-run-steps", engine_long_run_steps, "steps of the engines' long run (0: none)")
       ->check(CLI::Range(0LL, 100000000LL));
-  bool exec_stepper = false;
+  bool exec_stepper = false, exec_driver = false;
   double exec_timeout = 30;
+  app.add_flag("--exec-driver", exec_driver,
+               "audit the adaptive driver a child program serves (docs/protocol.md): the command follows \"--\"");
   app.add_flag("--exec-stepper", exec_stepper,
                "audit the stepper a child program serves (docs/protocol.md): the command follows \"--\", "
                "run from its argument vector (no shell); in double");
   app.add_option("--exec-timeout", exec_timeout, "seconds a child may take to reply (default 30)")
       ->check(CLI::Range(1e-3, 1e6));
   CLI11_PARSE(app, argc, argv);
-  if (exec_stepper != !child_command.empty()) {
-    std::cerr << "mechcheck-audit: " << (exec_stepper ? "--exec-stepper needs the child's command after \"--\""
-                                                       : "a command after \"--\" needs --exec-stepper")
+  if (exec_stepper && exec_driver) {
+    std::cerr << "mechcheck-audit: --exec-stepper and --exec-driver: one child a command\n";
+    return 1;
+  }
+  if ((exec_stepper || exec_driver) != !child_command.empty()) {
+    std::cerr << "mechcheck-audit: "
+              << (child_command.empty() ? "--exec-stepper and --exec-driver need the child's command after \"--\""
+                                        : "a command after \"--\" needs --exec-stepper or --exec-driver")
               << "\n";
     return 1;
   }
@@ -172,9 +179,19 @@ int main(int argc, char** argv) {
   }
   if (!tableau_files.empty()) request.patterns.push_back("tableau::*");  // alone: only them
   std::vector<audit::exec_target> exec_targets;
+  std::vector<audit::exec_driver_target> exec_drivers;
+  audit::exec_options eo;
+  eo.timeout = exec_timeout;
+  if (exec_driver) {
+    try {
+      exec_drivers.push_back(audit::exec_driver(child_command, eo));
+    } catch (const error& e) {
+      std::cerr << "mechcheck-audit: " << e.what() << "\n";
+      return 1;
+    }
+    driver_patterns.push_back("exec::*");
+  }
   if (exec_stepper) {
-    audit::exec_options eo;
-    eo.timeout = exec_timeout;
     try {
       exec_targets.push_back(audit::exec_stepper(child_command, eo));
     } catch (const error& e) {
@@ -233,6 +250,7 @@ int main(int argc, char** argv) {
     std::erase_if(drivers, [&](const audit::adaptive_driver& d) {
       return !audit_tool::matches(driver_patterns, d.name);
     });
+    for (const auto& t : exec_drivers) drivers.push_back(t.driver);
     if (drivers.empty()) {
       std::cerr << "mechcheck-audit: no driver matches the --driver patterns given\n";
       return 1;
@@ -257,6 +275,12 @@ int main(int argc, char** argv) {
     if (!report_files([&] { return audit::write_driver_report(output, driver_audits, plot_problem, timing); }))
       return 1;
     std::cout << "audited " << driver_audits.size() << " drivers in " << static_cast<long>(elapsed() + 0.5) << " s\n";
+    for (const auto& t : exec_drivers)
+      if (t.failures() > 0) {
+        std::cerr << "mechcheck-audit: " << t.driver.name << ": " << t.failures() << " children failed; the last: "
+                  << t.last_failure() << "\n";
+        return 3;
+      }
     return 0;
   }
   request.list_only = list;

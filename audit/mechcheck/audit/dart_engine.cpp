@@ -96,13 +96,16 @@ class run final : public engine_run {
     // assertions) aborts the process when a frame is computed from a non-finite position,
     // and its exponential map squares the angle (NaN past |q| = 1.3e154). A diverged state
     // is caught here, before anything reads a transform.
+    // Read one coordinate at a time: a VectorXd that libdart allocates must not be freed
+    // here (Eigen's allocator differs between builds, e.g. under AddressSanitizer).
     constexpr double largest = 1e150;
-    for (const auto& skel : skeletons_) {
-      const Eigen::VectorXd q = skel->getPositions(), v = skel->getVelocities();
-      if (!q.allFinite() || !v.allFinite() || q.cwiseAbs().maxCoeff() > largest)
-        throw non_finite_error(std::string(name) + ": step " + std::to_string(steps_) + ": skeleton '" +
-                               skel->getName() + "' diverged (a joint position beyond 1e150 or not finite)");
-    }
+    for (const auto& skel : skeletons_)
+      for (std::size_t i = 0; i < skel->getNumDofs(); ++i) {
+        const double q = skel->getPosition(i), v = skel->getVelocity(i);
+        if (!std::isfinite(q) || !std::isfinite(v) || std::abs(q) > largest)
+          throw non_finite_error(std::string(name) + ": step " + std::to_string(steps_) + ": skeleton '" +
+                                 skel->getName() + "' diverged (a joint position beyond 1e150 or not finite)");
+      }
   }
 
   body_reading read() const override {

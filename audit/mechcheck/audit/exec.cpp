@@ -279,7 +279,7 @@ struct handshake {
   method_structure structure;
 };
 
-handshake read_handshake(child& c) {
+handshake read_handshake(child& c, const std::string& kind) {
   const json h = c.receive("the handshake");
   const auto field = [&](const char* key) -> const json& {
     const auto it = h.find(key);
@@ -291,8 +291,8 @@ handshake read_handshake(child& c) {
   if (!field("version").is_number_integer() || field("version").get<int>() != protocol_version)
     throw c.failure("the handshake", "protocol version " + field("version").dump() + "; this audit speaks version " +
                                          std::to_string(protocol_version));
-  if (field("kind") != "stepper")
-    throw c.failure("the handshake", "kind " + field("kind").dump() + "; --exec-stepper runs a \"stepper\"");
+  if (field("kind") != kind)
+    throw c.failure("the handshake", "kind " + field("kind").dump() + "; --exec-" + kind + " runs a \"" + kind + "\"");
   handshake out;
   if (!field("name").is_string() || field("name").get<std::string>().empty())
     throw c.failure("the handshake", "\"name\" must be a non-empty string");
@@ -322,6 +322,7 @@ handshake read_handshake(child& c) {
 /// The children of one exec stepper, one at a time: a new one after a failure, up to
 /// options.restarts times.
 struct session {
+  std::string kind;  ///< "stepper" or "driver"
   std::vector<std::string> command;
   exec_options options;
   std::string name;
@@ -336,7 +337,7 @@ struct session {
       throw exec_error("exec '" + command_text(command) + "': not restarted after " + std::to_string(failures) +
                        " failures (the last: " + last_failure + ")");
     auto c = std::make_unique<child>(command, options);
-    const handshake h = read_handshake(*c);
+    const handshake h = read_handshake(*c, kind);
     if (h.name != name)
       throw c->failure("the handshake", "a new child named itself \"" + h.name + "\", the first \"" + name + "\"");
     current = std::move(c);
@@ -448,24 +449,88 @@ std::string command_text(const std::vector<std::string>& command) {
   return out;
 }
 
-exec_target exec_stepper(const std::vector<std::string>& command, const exec_options& options) {
-  if (command.empty() || command.front().empty()) throw domain_error("exec_stepper: the command is empty");
+namespace {
+/// A session whose first child has given its handshake.
+std::shared_ptr<session> open_session(const std::vector<std::string>& command, const exec_options& options,
+                                      const std::string& kind, handshake& h) {
+  const std::string who = "exec_" + kind;
+  if (command.empty() || command.front().empty()) throw domain_error(who + ": the command is empty");
   if (!(options.timeout > 0) || !std::isfinite(options.timeout))
-    throw domain_error("exec_stepper: the timeout must be positive and finite, got " + to_text(options.timeout));
-  if (options.max_line < 64) throw domain_error("exec_stepper: max_line below 64 bytes");
-  if (options.restarts < 0) throw domain_error("exec_stepper: restarts must be >= 0");
+    throw domain_error(who + ": the timeout must be positive and finite, got " + to_text(options.timeout));
+  if (options.max_line < 64) throw domain_error(who + ": max_line below 64 bytes");
+  if (options.restarts < 0) throw domain_error(who + ": restarts must be >= 0");
   ignore_sigpipe();
   auto s = std::make_shared<session>();
+  s->kind = kind;
   s->command = command;
   s->options = options;
   auto first = std::make_unique<child>(command, options);
-  const handshake h = read_handshake(*first);
+  h = read_handshake(*first, kind);
   s->name = h.name;
   s->current = std::move(first);
+  return s;
+}
+
+std::string served_by(const handshake& h, const std::vector<std::string>& command) {
+  return (h.origin.empty() ? std::string() : h.origin + "; ") + "served by '" + command_text(command) +
+         "' (docs/protocol.md, version " + std::to_string(protocol_version) + ")";
+}
+
+/// One integration by a driver child.
+driver_statistics integrate_run(const std::shared_ptr<session>& s, const ode_system& ode, double* y, double t0,
+                                double t1, double tolerance) {
+  std::unique_ptr<run_context> r(static_cast<run_context*>(create_run(s, ode)));
+  const int n = ode.dimension;
+  const std::string what = "integration of run " + std::to_string(r->id) + " from t = " + to_text(t0) + " to " +
+                           to_text(t1) + " at tolerance " + to_text(tolerance);
+  const json reply = exchange(*r, {{"op", "integrate"}, {"run", r->id}, {"t0", number_text(t0)}, {"t1", number_text(t1)},
+                                   {"tolerance", number_text(tolerance)}, {"y", numbers_json(y, n)}},
+                              what);
+  if (const auto e = reply.find("error"); e != reply.end()) {
+    end_run(r.release());
+    throw convergence_error("exec '" + command_text(s->command) + "': " + what + ": the driver failed: " +
+                            (e->is_string() ? e->get<std::string>() : e->dump()));
+  }
+  driver_statistics stats;
+  try {
+    numbers_into(reply, "y", n, y, "exec '" + command_text(s->command) + "': " + what);
+    for (const char* key : {"accepted", "rejected"})
+      if (const auto it = reply.find(key); it != reply.end()) {
+        if (!it->is_number_integer() || it->get<long long>() < 0)
+          throw exec_error("exec '" + command_text(s->command) + "': " + what + ": \"" + key +
+                           "\" must be a count, got " + it->dump());
+        (std::string(key) == "accepted" ? stats.accepted : stats.rejected) = it->get<long long>();
+      }
+  } catch (const exec_error& e) {
+    s->failed(e.what());
+    end_run(r.release());
+    throw;
+  }
+  end_run(r.release());
+  return stats;
+}
+}  // namespace
+
+exec_driver_target exec_driver(const std::vector<std::string>& command, const exec_options& options) {
+  handshake h;
+  auto s = open_session(command, options, "driver", h);
+  exec_driver_target target;
+  target.driver.name = "exec::" + h.name;
+  target.driver.origin = served_by(h, command);
+  target.driver.integrate = [s](const ode_system& ode, double* y, double t0, double t1, double tolerance) {
+    return integrate_run(s, ode, y, t0, t1, tolerance);
+  };
+  target.failures = [s] { return s->failures; };
+  target.last_failure = [s] { return s->last_failure; };
+  return target;
+}
+
+exec_target exec_stepper(const std::vector<std::string>& command, const exec_options& options) {
+  handshake h;
+  auto s = open_session(command, options, "stepper", h);
   black_box box;
   box.name = "exec::" + h.name;
-  box.origin = (h.origin.empty() ? std::string() : h.origin + "; ") + "served by '" + command_text(command) +
-               "' (docs/protocol.md, version " + std::to_string(protocol_version) + ")";
+  box.origin = served_by(h, command);
   box.declared = h.declared;
   box.structure = h.structure;
   box.create = [s](const ode_system& ode) { return create_run(s, ode); };

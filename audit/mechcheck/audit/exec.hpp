@@ -1,5 +1,6 @@
 #pragma once
-/// Steppers in another process: a child program, in any language, serves a stepper over its
+/// Steppers and drivers in another process: a child program, in any language, serves a
+/// stepper (or an adaptive driver) over its
 /// standard input and output by the protocol of docs/protocol.md (one JSON object a line,
 /// numbers exact), and the audit runs it as a black box (black_box.hpp): the child asks the
 /// parent for the problem's right-hand side and Jacobian while it takes a step.
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include "mechcheck/audit/black_box.hpp"
+#include "mechcheck/audit/drivers.hpp"
 
 namespace mechcheck::audit {
 
@@ -48,6 +50,19 @@ struct exec_target {
 /// Throws exec_error when the child cannot be started or its handshake is not the
 /// protocol's; domain_error for an empty command or bad options.
 exec_target exec_stepper(const std::vector<std::string>& command, const exec_options& options = {});
+
+/// An adaptive driver a child serves (its handshake's kind "driver"), and how its children
+/// fared. Each integration is a run: "start", one "integrate" from t0 to t1 at the
+/// tolerance (the child maps it to its library's tolerances and says how in its origin),
+/// "end".
+struct exec_driver_target {
+  adaptive_driver driver;  ///< named exec::<the handshake's name>
+  std::function<int()> failures;
+  std::function<std::string()> last_failure;
+};
+
+/// Throws as exec_stepper does.
+exec_driver_target exec_driver(const std::vector<std::string>& command, const exec_options& options = {});
 
 /// The command as one line of text (arguments quoted where they need it), for messages.
 std::string command_text(const std::vector<std::string>& command);
