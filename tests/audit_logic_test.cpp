@@ -18,7 +18,7 @@
 #include "mechcheck/audit/finite_differences.hpp"
 #include "mechcheck/audit/report.hpp"
 #include "mechcheck/audit/builtin.hpp"
-#include "mechcheck/audit/odeint.hpp"
+#include "mechcheck/audit/adapters/odeint.hpp"
 
 namespace audit_logic {
 using namespace mechcheck;

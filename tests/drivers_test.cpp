@@ -10,12 +10,12 @@
 
 #include "mechcheck/audit/audit.hpp"
 #include "mechcheck/audit/drivers.hpp"
-#include "mechcheck/audit/found.hpp"
+#include "mechcheck/audit/adapters/found.hpp"
 #ifdef MECHCHECK_HAVE_GSL
-#include "mechcheck/audit/gsl.hpp"
+#include "mechcheck/audit/adapters/gsl.hpp"
 #endif
 #ifdef MECHCHECK_HAVE_ARKODE
-#include "mechcheck/audit/arkode.hpp"
+#include "mechcheck/audit/adapters/arkode.hpp"
 #endif
 
 namespace drivers_test {

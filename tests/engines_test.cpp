@@ -13,7 +13,7 @@
 #include <cmath>
 
 #include "mechcheck/audit/engines.hpp"
-#include "mechcheck/audit/found.hpp"
+#include "mechcheck/audit/adapters/found.hpp"
 #include "mechcheck/audit/studies.hpp"
 #include "mechcheck/integrators.hpp"
 #include "mechcheck/reference/tops.hpp"

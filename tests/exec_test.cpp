@@ -7,7 +7,9 @@
 
 #include <signal.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -15,7 +17,8 @@
 
 #include "mechcheck/audit/black_box.hpp"
 #include "mechcheck/audit/drivers.hpp"
-#include "mechcheck/audit/exec.hpp"
+#include "mechcheck/audit/adapters/exec.hpp"
+#include "mechcheck/audit/engines.hpp"
 
 #ifndef MECHCHECK_EXEC_CHILD
 #error "the build defines MECHCHECK_EXEC_CHILD, the path of tests/exec/child.cpp's program"
@@ -189,6 +192,111 @@ TEST(exec, a_driver_child_is_audited_against_its_tolerances_and_its_failures_are
   EXPECT_EQ(failing.failures(), 0);
   // A stepper is not a driver.
   EXPECT_THROW(audit::exec_driver(child("rk4")), audit::exec_error);
+}
+
+/// The pendulum scenarios of an engine child, with a short long run.
+audit::engine_options pendulums(std::vector<std::string> scenarios = {"pendulum_small"}) {
+  audit::engine_options o;
+  o.scenarios = std::move(scenarios);
+  o.long_run_steps = 3000;
+  o.timing = true;
+  return o;
+}
+
+const audit::engine_integrator& integrator(const audit::exec_engine_target& t, const std::string& name) {
+  for (const auto& e : t.integrators)
+    if (e.name.size() >= name.size() && e.name.compare(e.name.size() - name.size(), name.size(), name) == 0) return e;
+  throw std::runtime_error("no integrator " + name);
+}
+
+TEST(exec, an_engine_child_is_audited_on_the_scenarios_it_builds_and_refuses_the_others_by_its_words) {
+  const auto t = audit::exec_engine(child("engine"));
+  ASSERT_EQ(t.integrators.size(), 3u);
+  EXPECT_EQ(t.integrators[1].name, "exec::test_engine/engine::rk4");
+  EXPECT_NE(t.integrators[0].origin.find("symplectic Euler"), std::string::npos) << t.integrators[0].origin;
+  for (const char* name : {"::rk4", "::euler"}) {
+    const auto a = audit::audit_engine(integrator(t, name), pendulums({"pendulum_small", "free_top"}));
+    EXPECT_EQ(a.order.result, outcome::confirmed) << name << ": " << a.order.evidence;
+    EXPECT_NEAR(std::stod(a.order.measured), std::string(name) == "::rk4" ? 4.0 : 1.0, 0.1) << a.order.measured;
+    ASSERT_EQ(a.scenarios.size(), 2u);  // in the scenarios' order: free_top, pendulum_small
+    const auto& p = a.scenarios[1];
+    EXPECT_TRUE(p.failure.empty() && p.long_run_failure.empty()) << p.failure << p.long_run_failure;
+    EXPECT_EQ(p.long_run_steps, 3000);
+    EXPECT_EQ(p.readout, "the engine's joint coordinates");
+    // The child's clock: 1e-7 s a step, as it says.
+    EXPECT_EQ(p.seconds_per_step, 1e-7);
+    EXPECT_NE(a.scenarios[0].refused.find("this engine builds hinge pendulums only"), std::string::npos)
+        << a.scenarios[0].refused;
+  }
+  EXPECT_EQ(t.failures(), 0) << t.last_failure();
+}
+
+TEST(exec, an_engine_child_that_claims_too_much_is_contradicted) {
+  const auto t = audit::exec_engine(child("engine_decimal"));  // and its numbers in decimal
+  const auto a = audit::audit_engine(integrator(t, "::euler_says_4"), pendulums());
+  EXPECT_EQ(a.order.result, outcome::contradicted) << a.order.evidence;
+  EXPECT_EQ(t.failures(), 0) << t.last_failure();
+}
+
+TEST(exec, an_engine_that_fails_is_a_failed_run_at_its_step_and_the_child_goes_on) {
+  const auto t = audit::exec_engine(child("engine_diverges"));
+  const auto a = audit::audit_engine(integrator(t, "::euler"), pendulums());
+  ASSERT_EQ(a.scenarios.size(), 1u);
+  const auto& p = a.scenarios[0];
+  EXPECT_EQ(p.long_run_steps, 999);
+  EXPECT_NE(p.long_run_failure.find("step 1000: exec::test_engine/engine_diverges::euler: step 1000: diverged"),
+            std::string::npos)
+      << p.long_run_failure;
+  // The order study's runs of 1024 steps and more fail at step 1000 (t_end = 2: h < 0.002);
+  // the shorter ones stand.
+  ASSERT_FALSE(p.global.points.empty());
+  for (const auto& point : p.global.points) EXPECT_GT(point.h, 2.0 / 1000);
+  EXPECT_NE(p.global.note.find("diverged"), std::string::npos) << p.global.note;
+  EXPECT_EQ(t.failures(), 0) << t.last_failure();
+}
+
+TEST(exec, a_broken_reading_ends_the_child_with_a_typed_error_and_the_audit_goes_on) {
+  const auto t = audit::exec_engine(child("engine_broken"));
+  const auto a = audit::audit_engine(integrator(t, "::rk4"), pendulums());
+  EXPECT_GT(t.failures(), 0);
+  EXPECT_NE(t.last_failure().find("\"frame\" has 17 numbers, 18 expected"), std::string::npos) << t.last_failure();
+  EXPECT_NE(t.last_failure().find("of run"), std::string::npos) << t.last_failure();
+  // The first request of each run is a study's whole run: those runs stand.
+  EXPECT_FALSE(a.scenarios.at(0).global.points.empty());
+}
+
+TEST(exec, the_protocol_refuses_deep_large_and_malformed_lines_with_their_reason) {
+  namespace ep = audit::exec_protocol;
+  const auto refused = [](const auto& call) {
+    try {
+      call();
+    } catch (const audit::exec_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(refused([] { ep::parse_numbers(std::string(100000, '[') + std::string(100000, ']'), "y", 1); })
+                .find("nested deeper than 16"),
+            std::string::npos);
+  EXPECT_NE(refused([] { ep::parse_numbers("{\"y\": [\"" + std::string(1000, '1') + "\"]}", "y", 1); }).find("1000 characters"),
+            std::string::npos);
+  EXPECT_NE(refused([] { ep::parse_numbers("{\"y\": [1, 2]}", "y", 1); }).find("2 numbers, 1 expected"), std::string::npos);
+  EXPECT_NE(refused([] { ep::parse_numbers("{\"y\": [null]}", "y", 1); }).find("null is not a number"), std::string::npos);
+  EXPECT_EQ(ep::parse_numbers("{\"y\": [\"0x1.8p+1\", \"0.10000000000000001\", 5e-324]}", "y", 3),
+            (std::vector<double>{3.0, 0.1, 5e-324}));
+  EXPECT_NE(refused([] { ep::parse_handshake(R"({"protocol": "mechcheck", "version": 1, "kind": "engine", "name": "x"})", "engine"); })
+                .find("lists its \"integrators\""),
+            std::string::npos);
+  const auto scenarios = audit::scenarios();
+  const audit::scenario& pendulum = *std::find_if(scenarios.begin(), scenarios.end(),
+                                                 [](const audit::scenario& s) { return s.name == "pendulum_small"; });
+  EXPECT_NE(refused([&] { ep::parse_step_reply(R"({"readings": []})", pendulum, 1, false); }).find("0 readings, 1 expected"),
+            std::string::npos);
+  EXPECT_NE(refused([&] { ep::parse_step_reply(R"({"error": "x", "at": 5})", pendulum, 3, true); }).find("names the step"),
+            std::string::npos);
+  // The scenario as sent reads back exactly.
+  const auto j = ep::scenario_json(pendulum);
+  EXPECT_NE(j.find("\"joint\":\"hinge_y\""), std::string::npos) << j;
 }
 
 }  // namespace exec_test

@@ -12,7 +12,7 @@
 #include <limits>
 
 #include "mechcheck/audit/engines.hpp"
-#include "mechcheck/audit/found.hpp"
+#include "mechcheck/audit/adapters/found.hpp"
 #include "mechcheck/audit/problems/chains.hpp"
 #include "mechcheck/integrators.hpp"
 

@@ -10,10 +10,10 @@
 #include "mechcheck/audit/audit.hpp"
 #include "mechcheck/audit/black_box.hpp"
 #ifdef MECHCHECK_HAVE_GSL
-#include "mechcheck/audit/gsl.hpp"
+#include "mechcheck/audit/adapters/gsl.hpp"
 #endif
 #ifdef MECHCHECK_HAVE_ARKODE
-#include "mechcheck/audit/arkode.hpp"
+#include "mechcheck/audit/adapters/arkode.hpp"
 #include "mechcheck/audit/tableau.hpp"
 #endif
 

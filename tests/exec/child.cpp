@@ -14,9 +14,18 @@
 //   grandchild   starts a grandchild that sleeps, then hangs (both must be killed)
 //   driver       an adaptive driver (kind "driver"): RK4 at h = tol^(1/4) (t1 - t0)
 //   driver_fails a driver that reports a failure for every integration
+//   engine       an engine (kind "engine") of hinge pendulums in their joint coordinates,
+//                integrators "euler" (symplectic Euler, claims order 1), "rk4" (claims 4),
+//                "euler_says_4" (symplectic Euler claiming 4); it refuses every other scenario
+//   engine_diverges  the same, failing at step 1000 of every run ("diverged")
+//   engine_broken    the same, a reading of 17 numbers at the second request of a run
+//   engine_decimal   the same, asking for decimal numbers (handshake "numbers")
+//   engine COST_NS   the engine, each step taking COST_NS nanoseconds of wall time (a busy
+//                    wait: bench/exec_bench.cpp)
 #include <unistd.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -27,16 +36,24 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pendulum.hpp"
+
 using json = nlohmann::json;
 using vec = std::vector<double>;
 
 namespace {
 std::string mode;
 
+/// C's hexadecimal form of x (std::to_chars: what printf("%a") writes, faster).
 std::string hex(double x) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%a", x);
-  return b;
+  if (!std::isfinite(x)) return std::isnan(x) ? "nan" : x > 0 ? "inf" : "-inf";  // as printf
+  char b[40] = "-0x";
+  const bool negative = std::signbit(x);
+  char* start = b + (negative ? 3 : 2);
+  if (!negative) b[0] = '0', b[1] = 'x';
+  const auto [end, error] = std::to_chars(start, b + sizeof b, std::fabs(x), std::chars_format::hex);
+  static_cast<void>(error);
+  return std::string(b, end);
 }
 double num(const json& v) { return v.is_string() ? std::strtod(v.get<std::string>().c_str(), nullptr) : v.get<double>(); }
 vec nums(const json& a) {
@@ -88,10 +105,109 @@ vec step(double t, double h, vec y) {
   for (std::size_t i = 0; i < n; ++i) y[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
   return y;
 }
+using exec_test::pendulum;
+
+/// x as a JSON number: the shortest decimal that reads back exactly (std::to_chars).
+void append_number(std::string& out, double x) {
+  char b[32];
+  const auto [end, error] = std::to_chars(b, b + sizeof b, x);
+  static_cast<void>(error);
+  out.append(b, end);
+}
+
+/// A reading's JSON text, written directly with JSON numbers (a thousand readings a reply in
+/// the long run: the fewer bytes, the less the parent parses).
+std::string reading_text(const pendulum& p, bool broken) {
+  vec f = p.frame();
+  if (broken) f.pop_back();
+  std::string out = "{\"frame\":[";
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    if (i) out += ',';
+    append_number(out, f[i]);
+  }
+  out += "],\"q\":[";
+  append_number(out, p.theta);
+  out += "],\"v\":[";
+  append_number(out, p.rate);
+  return out + "]}";
+}
+json reading(const pendulum& p, bool broken) { return json::parse(reading_text(p, broken)); }
+
+/// The engine modes; `cost_ns` the wall time of a step (the benchmark's engine).
+void serve_engine(long cost_ns) {
+  const bool decimal = mode == "engine_decimal";
+  json hello = {{"protocol", "mechcheck"}, {"version", 1}, {"kind", "engine"}, {"name", "test_engine/" + mode},
+                {"origin", "tests/exec/child.cpp"},
+                {"integrators", {{{"name", "euler"}, {"origin", "symplectic Euler"}, {"claims", {{"order", 1}}}},
+                                 {{"name", "rk4"}, {"claims", {{"order", 4}}}},
+                                 {{"name", "euler_says_4"}, {"claims", {{"order", 4}}}}}}};
+  if (decimal) hello["numbers"] = "decimal";
+  send(hello);
+  std::map<long long, pendulum> runs;
+  for (;;) {
+    const json r = receive();
+    const std::string op = r.value("op", "");
+    const long long id = r.value("run", 0LL);
+    if (op == "start") {
+      const json& sc = r["scenario"];
+      if (sc["joint"] != "hinge_y" || sc["structure"] != "one_body") {
+        send({{"refused", "this engine builds hinge pendulums only"}});
+        continue;
+      }
+      if (decimal && num(sc["mass"]) != 1.0) std::exit(7);  // decimals must arrive exact
+      pendulum p;
+      p.cost = std::chrono::nanoseconds(cost_ns);
+      p.integrator = r["integrator"].get<std::string>();
+      p.m = num(sc["mass"]);
+      p.g = num(sc["gravity"]);
+      const vec c = nums(sc["com"]), inertia = nums(sc["inertia"]), rot = nums(sc["rotation0"]), w = nums(sc["omega0"]);
+      p.cx = c[0], p.cz = c[2];
+      p.j = p.m * (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) + inertia[1];
+      p.theta = std::atan2(rot[2], rot[0]);
+      p.rate = w[1];
+      runs[id] = p;
+      send({{"ok", true}, {"reading", reading(p, false)}});
+    } else if (op == "end") {
+      runs.erase(id);
+      send({{"ok", true}});
+    } else if (op == "step") {
+      pendulum& p = runs.at(id);
+      ++p.requests;
+      const double h = num(r["h"]);
+      const long n = r["n"].get<long>();
+      const bool each = r["read"] == "each";
+      std::string readings;
+      bool failed = false;
+      const auto t0 = std::chrono::steady_clock::now();
+      for (long k = 1; k <= n && !failed; ++k) {
+        if (mode == "engine_diverges" && p.steps + 1 == 1000) {
+          std::cout << R"({"error":"diverged","at":)" << k << R"(,"readings":[)" << readings << "]}\n" << std::flush;
+          failed = true;
+          break;
+        }
+        p.step(h);
+        if (each || k == n) readings += (readings.empty() ? "" : ",") + reading_text(p, mode == "engine_broken" && p.requests == 2);
+      }
+      if (failed) continue;
+      // The steps' time: the clock's (reading included) when a cost is given, else 1e-7 s a
+      // step (what the tests expect back).
+      const double seconds = p.cost.count() > 0 ? std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()
+                                                : 1e-7 * static_cast<double>(n);
+      std::cout << R"({"readings":[)" << readings << "]" << (r.value("timed", false) ? ",\"seconds\":\"" + hex(seconds) + "\"" : std::string())
+                << "}\n" << std::flush;
+    } else {
+      send({{"error", "unknown op " + op}});
+    }
+  }
+}
 }  // namespace
 
 int main(int argc, char** argv) {
   mode = argc > 1 ? argv[1] : "rk4";
+  if (mode.rfind("engine", 0) == 0) {
+    serve_engine(argc > 2 ? std::atol(argv[2]) : 0);
+    return 0;
+  }
   const bool driver = mode == "driver" || mode == "driver_fails";
   json hello = {{"protocol", "mechcheck"}, {"version", mode == "version_2" ? 2 : 1}, {"kind", driver ? "driver" : "stepper"},
                 {"name", "test_child/" + mode}, {"origin", "tests/exec/child.cpp"}};

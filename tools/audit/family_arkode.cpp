@@ -1,7 +1,7 @@
 // ARKODE's built-in Butcher tables: run by ARKODE at fixed steps (black boxes, double), and
 // the same coefficients through mechcheck's Runge-Kutta stepper (double and mpfr50), named
 // arkode::<table>/tableau (built where SUNDIALS is found).
-#include "mechcheck/audit/arkode.hpp"
+#include "mechcheck/audit/adapters/arkode.hpp"
 #include "mechcheck/audit/black_box.hpp"
 #include "mechcheck/audit/tableau.hpp"
 #include "mechcheck/audit/tableau_file.hpp"

@@ -1,6 +1,6 @@
 // GSL's one-step types as black boxes, in double (built where GSL is found).
 #include "mechcheck/audit/black_box.hpp"
-#include "mechcheck/audit/gsl.hpp"
+#include "mechcheck/audit/adapters/gsl.hpp"
 #include "run_family.hpp"
 
 namespace mechcheck::audit_tool {

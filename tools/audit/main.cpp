@@ -9,14 +9,14 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
-#include <fnmatch.h>
 
 #include "families.hpp"
+#include "patterns.hpp"
 #include "run_family.hpp"
-#include "mechcheck/audit/found.hpp"
+#include "mechcheck/audit/adapters/found.hpp"
 #include "mechcheck/audit/problems/classic.hpp"
 #include "mechcheck/audit/report.hpp"
-#include "mechcheck/audit/exec.hpp"
+#include "mechcheck/audit/adapters/exec.hpp"
 #include "mechcheck/audit/tableau_file.hpp"
 
 namespace {
@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
   app.add_flag("--timing", timing, "put wall times into the files (not reproducible)");
   app.add_flag("--list", list, "list the steppers and exit");
   app.add_option("--require", require,
-                 "exit with status 2 when a claim of a stepper matching this pattern is "
+                 "exit with status 2 when a claim of a stepper or engine integrator matching this pattern is "
                  "contradicted (e.g. 'mechcheck::*'; '*' for all)");
   app.add_flag("-q,--quiet", quiet, "no progress on stderr");
   double newton_tolerance = 0;
@@ -120,24 +120,35 @@ int main(int argc, char** argv) {
   long long engine_long_run_steps = 100000;
   app.add_option("--engine-long-run-steps", engine_long_run_steps, "steps of the engines' long run (0: none)")
       ->check(CLI::Range(0LL, 100000000LL));
-  bool exec_stepper = false, exec_driver = false;
+  bool exec_stepper = false, exec_driver = false, exec_engine = false;
   double exec_timeout = 30;
   app.add_flag("--exec-driver", exec_driver,
                "audit the adaptive driver a child program serves (docs/protocol.md): the command follows \"--\"");
   app.add_flag("--exec-stepper", exec_stepper,
                "audit the stepper a child program serves (docs/protocol.md): the command follows \"--\", "
                "run from its argument vector (no shell); in double");
+  app.add_flag("--exec-engine", exec_engine,
+               "audit the physics engine's integrators a child program serves (docs/protocol.md) on the "
+               "scenarios: the command follows \"--\"");
   app.add_option("--exec-timeout", exec_timeout, "seconds a child may take to reply (default 30)")
       ->check(CLI::Range(1e-3, 1e6));
   CLI11_PARSE(app, argc, argv);
-  if (exec_stepper && exec_driver) {
-    std::cerr << "mechcheck-audit: --exec-stepper and --exec-driver: one child a command\n";
+  try {
+    for (const auto& [option, patterns] : {std::pair{"--stepper", &steppers}, std::pair{"--driver", &driver_patterns},
+                                           std::pair{"--engine", &engine_patterns}, std::pair{"--require", &require}})
+      for (const auto& p : *patterns) audit_tool::check_pattern(option, p);
+  } catch (const error& e) {
+    std::cerr << "mechcheck-audit: " << e.what() << "\n";
     return 1;
   }
-  if ((exec_stepper || exec_driver) != !child_command.empty()) {
+  if (int(exec_stepper) + int(exec_driver) + int(exec_engine) > 1) {
+    std::cerr << "mechcheck-audit: --exec-stepper, --exec-driver and --exec-engine: one child a command\n";
+    return 1;
+  }
+  if ((exec_stepper || exec_driver || exec_engine) != !child_command.empty()) {
     std::cerr << "mechcheck-audit: "
-              << (child_command.empty() ? "--exec-stepper and --exec-driver need the child's command after \"--\""
-                                        : "a command after \"--\" needs --exec-stepper or --exec-driver")
+              << (child_command.empty() ? "--exec-stepper, --exec-driver and --exec-engine need the child's command after \"--\""
+                                        : "a command after \"--\" needs --exec-stepper, --exec-driver or --exec-engine")
               << "\n";
     return 1;
   }
@@ -205,8 +216,20 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
+  int status = 0;  // 2: a required claim contradicted; 3: a child failed
+  std::vector<audit::exec_engine_target> exec_engines;
+  if (exec_engine) {
+    try {
+      exec_engines.push_back(audit::exec_engine(child_command, eo));
+    } catch (const error& e) {
+      std::cerr << "mechcheck-audit: " << e.what() << "\n";
+      return 1;
+    }
+    if (engine_patterns.empty()) engine_patterns.push_back("exec::*");  // alone: only the child's
+  }
   if (!engine_patterns.empty()) {
     std::vector<audit::engine_integrator> engines = audit::engines_found();
+    for (const auto& t : exec_engines) engines.insert(engines.end(), t.integrators.begin(), t.integrators.end());
     std::erase_if(engines, [&](const audit::engine_integrator& e) {
       return !audit_tool::matches(engine_patterns, e.name);
     });
@@ -230,7 +253,10 @@ int main(int argc, char** argv) {
     if (!list) {
       // The inertia of the shapes of every engine one of whose integrators was asked for.
       std::vector<audit::shape_audit> shape_audits;
-      for (const auto& engine : audit::shapes_found())
+      std::vector<audit::engine_shapes> shape_engines = audit::shapes_found();
+      for (const auto& t : exec_engines)
+        if (t.shapes) shape_engines.push_back(*t.shapes);
+      for (const auto& engine : shape_engines)
         if (std::any_of(engines.begin(), engines.end(),
                         [&](const audit::engine_integrator& e) { return e.name.rfind(engine.engine + "::", 0) == 0; }))
           for (auto& a : audit::audit_shapes(engine)) shape_audits.push_back(std::move(a));
@@ -239,7 +265,18 @@ int main(int argc, char** argv) {
       std::cout << "audited " << engine_audits.size() << " engine integrators in "
                 << static_cast<long>(elapsed() + 0.5) << " s\n";
     }
-    if (steppers.empty() && tableau_files.empty() && driver_patterns.empty()) return 0;
+    for (const auto& a : engine_audits)
+      if (!a.claims_hold() && audit_tool::matches_any(require, a.integrator)) {
+        std::cerr << "mechcheck-audit: " << a.integrator << ": a declared claim is contradicted (see the table)\n";
+        status = 2;
+      }
+    for (const auto& t : exec_engines)
+      if (t.failures() > 0) {
+        std::cerr << "mechcheck-audit: " << audit::command_text(child_command) << ": " << t.failures()
+                  << " children failed; the last: " << t.last_failure() << "\n";
+        return 3;
+      }
+    if (steppers.empty() && tableau_files.empty() && driver_patterns.empty()) return status;
   }
   const bool drivers_only = !driver_patterns.empty() && steppers.empty() && tableau_files.empty();
 
@@ -348,10 +385,9 @@ int main(int argc, char** argv) {
   if (!wrote) return 1;
   std::cout << "audited " << audits.size() << " stepper-tier pairs in "
             << static_cast<long>(elapsed() + 0.5) << " s\n";
-  int status = 0;
   for (const auto& a : audits)
     for (const auto& pattern : require)
-      if (!a.claims_hold() && fnmatch(pattern.c_str(), a.stepper.c_str(), 0) == 0) {
+      if (!a.claims_hold() && audit_tool::matches({pattern}, a.stepper)) {
         std::cerr << "mechcheck-audit: " << a.stepper << " [" << a.tier
                   << "]: a declared claim is contradicted (see the table)\n";
         status = 2;

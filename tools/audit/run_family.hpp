@@ -1,30 +1,12 @@
 #pragma once
 // Runs the audits of one family in one tier (included by the family translation units).
 
-#include <fnmatch.h>
-
 #include "families.hpp"
+#include "patterns.hpp"
 #include "mechcheck/audit/audit.hpp"
 #include "mechcheck/audit/problems/classic.hpp"
 
 namespace mechcheck::audit_tool {
-
-inline bool matches(const std::vector<std::string>& patterns, const std::string& name) {
-  if (patterns.empty()) return true;
-  for (const auto& p : patterns)
-    if (fnmatch(p.c_str(), name.c_str(), 0) == 0) return true;
-  return false;
-}
-
-/// A companion "<name>/embedding" (the embedded formula of a pair) is audited with its
-/// stepper, whose embedded reading of the declared order it measures
-/// (audit::apply_embedded_reading).
-inline bool selected(const std::vector<std::string>& patterns, const std::string& name) {
-  const std::string suffix = "/embedding";
-  if (matches(patterns, name)) return true;
-  return name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0 &&
-         matches(patterns, name.substr(0, name.size() - suffix.size()));
-}
 
 template <class T>
 family_result run_family(const std::vector<audit::stepper_under_audit<T>>& steppers,

@@ -24,7 +24,7 @@
 #include "mechcheck/core.hpp"
 #include "mechcheck/integrators/steppers.hpp"
 #ifdef MECHCHECK_HAVE_ARKODE
-#include "mechcheck/audit/arkode.hpp"
+#include "mechcheck/audit/adapters/arkode.hpp"
 #endif
 
 namespace {

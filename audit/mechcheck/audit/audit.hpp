@@ -42,7 +42,7 @@
 #include <vector>
 
 #include "mechcheck/audit/finite_differences.hpp"
-#include "mechcheck/audit/problems.hpp"
+#include "mechcheck/audit/problems/exact.hpp"
 #include "mechcheck/audit/result.hpp"
 #include "mechcheck/audit/studies.hpp"
 #include "mechcheck/audit/symplectic.hpp"

@@ -732,6 +732,22 @@ engine_observation observe(const scenario& s, const body_reading& r) {
   return o;
 }
 
+double engine_run::trajectory(double h, long n, const std::function<void(long, const body_reading&)>& each, bool timed) {
+  using clock = std::chrono::steady_clock;
+  double seconds = 0;
+  for (long k = 1; k <= n; ++k) {
+    if (timed) {
+      const auto t0 = clock::now();
+      step(h);
+      seconds += std::chrono::duration<double>(clock::now() - t0).count();
+    } else {
+      step(h);
+    }
+    each(k, read());
+  }
+  return seconds;
+}
+
 namespace {
 /// The halving studies of a scenario: every observable together, then each class. The
 /// runs (n steps to t_end) are cached by n, so that the classes share them: the longest
@@ -749,8 +765,7 @@ void order_of(const engine_integrator& in, const scenario& s, const engine_optio
     outcome o;
     try {
       auto e = in.start(s);
-      const double h = s.t_end / static_cast<double>(n);
-      for (long i = 0; i < n; ++i) e->step(h);
+      e->advance(s.t_end / static_cast<double>(n), n);
       o.obs = observe(s, e->read()).observables;
       o.ok = true;
     } catch (const scenario_refused&) {
@@ -795,7 +810,6 @@ std::vector<std::pair<double, double>> history(const growth_recorder& g, double 
 void run_long(const engine_integrator& in, const scenario& s, const engine_options& opt,
               engine_scenario_audit& a) {
   if (opt.long_run_steps <= 0) return;
-  using clock = std::chrono::steady_clock;
   growth_recorder energy, momentum, anchor;
   auto e = in.start(s);
   const engine_observation o0 = observe(s, e->read());
@@ -803,43 +817,43 @@ void run_long(const engine_integrator& in, const scenario& s, const engine_optio
   const double e_scale = std::abs(o0.energy) > 0 ? std::abs(o0.energy) : 1.0;
   const double l_scale = o0.momentum.norm() > 0 ? o0.momentum.norm() : 1.0;
   const bool momentum_kept = s.momentum != scenario::momentum_law::none;
+  // The run in three thirds, each timed apart (the cost is the median third's).
   double third[3] = {0, 0, 0};
-  long long n = 0;
+  long long done = 0, base = 0;  // steps observed; the first step of the current third - 1
+  const auto each = [&](long k, const body_reading& r) {
+    const long long n = base + k;
+    const engine_observation o = observe(s, r);
+    const double de = std::abs(o.energy - o0.energy) / e_scale;
+    if (!std::isfinite(de)) throw non_finite_error("the energy is not finite");
+    energy.add(n, de);
+    if (momentum_kept) momentum.add(n, (o.momentum - o0.momentum).norm() / l_scale);
+    if (o.constraint) {
+      if (n == 1) a.constraint_first = *o.constraint;
+      worst.position = std::max(worst.position, o.constraint->position);
+      worst.velocity = std::max(worst.velocity, o.constraint->velocity);
+      worst.axis = std::max(worst.axis, o.constraint->axis);
+      worst.loop = std::max(worst.loop, o.constraint->loop);
+      anchor.add(n, o.constraint->position);
+    }
+    done = n;
+  };
   try {
-    for (n = 1; n <= opt.long_run_steps; ++n) {
-      if (opt.timing) {
-        const auto t0 = clock::now();
-        e->step(s.h_long);
-        third[std::min<long long>(2, 3 * (n - 1) / opt.long_run_steps)] +=
-            std::chrono::duration<double>(clock::now() - t0).count();
-      } else {
-        e->step(s.h_long);
-      }
-      const engine_observation o = observe(s, e->read());
-      const double de = std::abs(o.energy - o0.energy) / e_scale;
-      if (!std::isfinite(de)) throw non_finite_error("the energy is not finite");
-      energy.add(n, de);
-      if (momentum_kept) momentum.add(n, (o.momentum - o0.momentum).norm() / l_scale);
-      if (o.constraint) {
-        if (n == 1) a.constraint_first = *o.constraint;
-        worst.position = std::max(worst.position, o.constraint->position);
-        worst.velocity = std::max(worst.velocity, o.constraint->velocity);
-        worst.axis = std::max(worst.axis, o.constraint->axis);
-        worst.loop = std::max(worst.loop, o.constraint->loop);
-        anchor.add(n, o.constraint->position);
-      }
+    for (int j = 0; j < 3; ++j) {
+      base = opt.long_run_steps * j / 3;
+      const long long length = opt.long_run_steps * (j + 1) / 3 - base;
+      if (length > 0) third[j] = e->trajectory(s.h_long, static_cast<long>(length), each, opt.timing) / static_cast<double>(length);
     }
   } catch (const std::exception& ex) {
-    a.long_run_failure = "step " + std::to_string(n) + ": " + ex.what();
+    a.long_run_failure = "step " + std::to_string(done + 1) + ": " + ex.what();
   }
-  a.long_run_steps = n - 1;
+  a.long_run_steps = done;
   if (o0.constraint && a.long_run_steps > 0) {
     a.constraint_max = worst;
     a.constraint_growth = anchor.exponent();
   }
   if (opt.timing && a.long_run_failure.empty()) {
     std::sort(std::begin(third), std::end(third));
-    a.seconds_per_step = third[1] / (static_cast<double>(opt.long_run_steps) / 3);
+    a.seconds_per_step = third[1];
   }
   if (s.conserves_energy) {
     a.energy_growth = energy.exponent();
@@ -1106,6 +1120,8 @@ std::vector<shape_audit> audit_shapes(const engine_shapes& engine) {
       a.relative_error = ((a.measured - a.exact).cwiseAbs().cwiseQuotient(a.exact)).maxCoeff();
     } catch (const scenario_refused& e) {
       a.refused = e.what();
+    } catch (const std::exception& e) {
+      a.failure = e.what();  // an engine's error, a non-finite moment, a child that broke the protocol
     }
     out.push_back(std::move(a));
   }
@@ -1185,7 +1201,9 @@ void print_engines(std::ostream& out, const std::vector<engine_audit>& audits, c
   }
   for (const auto& a : shapes) {
     std::snprintf(line, sizeof line, "inertia %-10s %-12s %s\n", a.engine.c_str(), a.shape.c_str(),
-                  a.refused.empty() ? ("largest relative error " + sci(a.relative_error)).c_str() : "not offered");
+                  !a.failure.empty()   ? ("failed: " + a.failure).c_str()
+                  : a.refused.empty() ? ("largest relative error " + sci(a.relative_error)).c_str()
+                                      : "not offered");
     out << line;
   }
 }
@@ -1246,7 +1264,9 @@ std::string engines_to_json(const std::vector<engine_audit>& audits, const std::
   json shape_rows = json::array();
   for (const auto& a : shapes) {
     json j{{"engine", a.engine}, {"shape", a.shape}};
-    if (!a.refused.empty()) {
+    if (!a.failure.empty()) {
+      j["failure"] = a.failure;
+    } else if (!a.refused.empty()) {
       j["refused"] = a.refused;
     } else {
       j["measured"] = {a.measured(0), a.measured(1), a.measured(2)};
@@ -1292,6 +1312,10 @@ std::string engines_to_markdown(const std::vector<engine_audit>& audits, const s
     md << "\n| engine | shape | exact moments | engine's moments | largest relative error |\n|---|---|---|---|---|\n";
     for (const auto& a : shapes) {
       md << "| " << a.engine << " | " << a.shape << " | ";
+      if (!a.failure.empty()) {
+        md << "- | failed: " << a.failure << " | - |\n";
+        continue;
+      }
       if (!a.refused.empty()) {
         md << "- | not offered | - |\n";
         continue;

@@ -209,6 +209,16 @@ class engine_run {
   /// One step of size h; throws error (naming the engine's message) on failure.
   virtual void step(double h) = 0;
   virtual body_reading read() const = 0;
+  /// n steps of size h (the order studies). An engine in another process takes them in one
+  /// request (exec.hpp); the default calls step() n times.
+  virtual void advance(double h, long n) {
+    for (long i = 0; i < n; ++i) step(h);
+  }
+  /// n steps of size h with the state read after each: each(k, reading) for k = 1 .. n
+  /// (the long run). A failure at step k throws after each() has seen steps 1 .. k - 1.
+  /// With `timed`, returns the wall time spent in the steps alone, in seconds (an engine in
+  /// another process measures it there: the protocol's cost is not the engine's); else 0.
+  virtual double trajectory(double h, long n, const std::function<void(long, const body_reading&)>& each, bool timed);
   /// Non-empty: the engine integrates another model than the scenario's, and how (a loop
   /// closed by a soft constraint): the order studies then measure the distance between the
   /// models and say nothing of the integrator's order, which they do not judge.
@@ -323,6 +333,7 @@ struct engine_shapes {
 /// One engine's inertia of one shape against the exact one.
 struct shape_audit {
   std::string engine, shape, refused;
+  std::string failure;  ///< non-empty: the engine failed to give the moments (its error)
   Eigen::Vector3d measured{0, 0, 0}, exact{0, 0, 0};  ///< ascending
   double relative_error = 0;  ///< max over the moments of |measured - exact| / exact
 };

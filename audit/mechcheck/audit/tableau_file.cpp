@@ -90,20 +90,51 @@ mpfr100 parse_coefficient(const std::string& text, const std::string& where) {
 
 tableau_file read_tableau(const std::filesystem::path& path) {
   const std::string file = path.string();
-  std::ifstream in(path);
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec) fail(file, "cannot be read: " + ec.message());
+  if (size > max_tableau_bytes)
+    fail(file, "has " + std::to_string(size) + " bytes (a tableau file is at most " + std::to_string(max_tableau_bytes) +
+                   ")");
+  std::ifstream in(path, std::ios::binary);
   if (!in) fail(file, "cannot be read");
+  std::string text(static_cast<std::size_t>(size), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(size));
+  if (!in) fail(file, "cannot be read");
+  tableau_file t = parse_tableau(text, file);
+  if (t.name.empty()) t.name = path.stem().string();
+  return t;
+}
+
+tableau_file parse_tableau(std::string_view text, const std::string& file) {
+  if (text.size() > max_tableau_bytes)
+    fail(file, "has " + std::to_string(text.size()) + " bytes (a tableau file is at most " +
+                   std::to_string(max_tableau_bytes) + ")");
+  // A tableau is nested three deep (the file, A, a row): deeper is refused while parsing.
+  constexpr int max_depth = 8;
+  const json::parser_callback_t bound = [&](int depth, json::parse_event_t, json&) {
+    if (depth > max_depth) fail(file, "is nested deeper than " + std::to_string(max_depth) + " levels");
+    return true;
+  };
   json doc;
   try {
-    doc = json::parse(in);
-  } catch (const std::exception& e) {
+    doc = json::parse(text.begin(), text.end(), bound);
+  } catch (const json::exception& e) {
     fail(file, std::string("is not JSON: ") + e.what());
   }
   if (!doc.is_object()) fail(file, "is not a JSON object with A, b and c");
   tableau_file t;
   t.path = file;
-  t.name = doc.contains("name") && doc.at("name").is_string() ? doc.at("name").get<std::string>()
-                                                              : path.stem().string();
-  if (doc.contains("source") && doc.at("source").is_string()) t.source = doc.at("source");
+  const auto text_field = [&](const char* key, std::size_t limit) {
+    if (!doc.contains(key)) return std::string();
+    if (!doc.at(key).is_string()) fail(file, std::string(key) + " is not a string");
+    const std::string& v = doc.at(key).get_ref<const std::string&>();
+    if (v.size() > limit)
+      fail(file, std::string(key) + " has " + std::to_string(v.size()) + " characters (at most " + std::to_string(limit) + ")");
+    return v;
+  };
+  t.name = text_field("name", 256);
+  t.source = text_field("source", 4096);
   if (!doc.contains("A")) fail(file, "A is missing");
   const json& a = doc.at("A");
   if (!a.is_array() || a.empty()) fail(file, "A is not a non-empty array of rows: " + a.dump().substr(0, 80));
@@ -131,13 +162,14 @@ tableau_file read_tableau(const std::filesystem::path& path) {
     for (const auto& c : vector_of(doc, "bhat", s, file)) t.bhat.push_back(take(c));
   const auto integer = [&](const char* key) -> std::optional<int> {
     if (!doc.contains(key)) return std::nullopt;
-    if (!doc.at(key).is_number_integer() || doc.at(key).get<int>() < 1)
-      fail(file, std::string(key) + " = " + doc.at(key).dump() + " is not a positive integer");
-    return doc.at(key).get<int>();
+    if (!doc.at(key).is_number_integer() || doc.at(key).get<long long>() < 1 || doc.at(key).get<long long>() > 64)
+      fail(file, std::string(key) + " = " + doc.at(key).dump().substr(0, 80) + " is not an integer from 1 to 64");
+    return static_cast<int>(doc.at(key).get<long long>());
   };
   const auto boolean = [&](const char* key) -> std::optional<bool> {
     if (!doc.contains(key)) return std::nullopt;
-    if (!doc.at(key).is_boolean()) fail(file, std::string(key) + " = " + doc.at(key).dump() + " is not true or false");
+    if (!doc.at(key).is_boolean())
+      fail(file, std::string(key) + " = " + doc.at(key).dump().substr(0, 80) + " is not true or false");
     return doc.at(key).get<bool>();
   };
   t.order = integer("order");

@@ -38,6 +38,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "mechcheck/audit/order_conditions.hpp"
@@ -52,9 +53,12 @@ class tableau_error : public error {
   using error::error;
 };
 
-/// Bounds on untrusted input: a coefficient's text, and the stages.
+/// Bounds on untrusted input: a coefficient's text, the stages, the file (64 stages of
+/// 1000-character coefficients fit in 5 MB), a name (256 characters), a source (4096); the
+/// file's JSON is nested at most 8 deep; a declared order is from 1 to 64.
 inline constexpr std::size_t max_coefficient_length = 1000;
 inline constexpr std::size_t max_stages = 64;
+inline constexpr std::size_t max_tableau_bytes = std::size_t(16) << 20;
 /// Decimals with at most this many significant digits are exact (0.5, 0.25, 0.125).
 inline constexpr int short_decimal_digits = 4;
 
@@ -83,6 +87,9 @@ struct coefficient_text {
 
 /// Reads and validates a tableau file. Throws tableau_error.
 tableau_file read_tableau(const std::filesystem::path& file);
+/// The same from the file's text; `file` names it in messages (the name defaults to "" here,
+/// to the file's stem in read_tableau).
+tableau_file parse_tableau(std::string_view text, const std::string& file);
 
 /// Parses one coefficient ("0.25", "1/3", "-2e-3"); throws tableau_error naming `where`.
 mpfr100 parse_coefficient(const std::string& text, const std::string& where);

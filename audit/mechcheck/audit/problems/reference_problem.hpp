@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "mechcheck/audit/problems.hpp"
+#include "mechcheck/audit/problems/exact.hpp"
 #include "mechcheck/audit/problems/reference_cache.hpp"
 #include "mechcheck/audit/problems/reference_solution.hpp"
 #include "mechcheck/audit/tableau_file.hpp"

@@ -34,7 +34,7 @@
 #include <string>
 #include <vector>
 
-#include "mechcheck/audit/problems.hpp"
+#include "mechcheck/audit/problems/exact.hpp"
 #include "mechcheck/core.hpp"
 #include "mechcheck/integrators/gauss_legendre.hpp"
 

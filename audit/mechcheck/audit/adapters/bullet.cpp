@@ -1,4 +1,4 @@
-#include "mechcheck/audit/bullet.hpp"
+#include "mechcheck/audit/adapters/bullet.hpp"
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>

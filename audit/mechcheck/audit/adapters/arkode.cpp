@@ -1,4 +1,4 @@
-#include "mechcheck/audit/arkode.hpp"
+#include "mechcheck/audit/adapters/arkode.hpp"
 
 #include <arkode/arkode_arkstep.h>
 #include <arkode/arkode_butcher_dirk.h>

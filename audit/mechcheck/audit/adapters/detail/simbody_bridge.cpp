@@ -1,5 +1,5 @@
 // Compiled as C++17 (see simbody_bridge.hpp).
-#include "mechcheck/audit/detail/simbody_bridge.hpp"
+#include "mechcheck/audit/adapters/detail/simbody_bridge.hpp"
 
 #include <Simbody.h>
 

@@ -1,4 +1,4 @@
-#include "mechcheck/audit/simbody.hpp"
+#include "mechcheck/audit/adapters/simbody.hpp"
 
 #include <cmath>
 #include <memory>
@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "mechcheck/audit/detail/simbody_bridge.hpp"
+#include "mechcheck/audit/adapters/detail/simbody_bridge.hpp"
 
 namespace mechcheck::audit::simbody {
 

@@ -1,6 +1,6 @@
 #pragma once
-/// Steppers and drivers in another process: a child program, in any language, serves a
-/// stepper (or an adaptive driver) over its
+/// Steppers, drivers and engines in another process: a child program, in any language, serves
+/// a stepper (or an adaptive driver, or a physics engine's integrators) over its
 /// standard input and output by the protocol of docs/protocol.md (one JSON object a line,
 /// numbers exact), and the audit runs it as a black box (black_box.hpp): the child asks the
 /// parent for the problem's right-hand side and Jacobian while it takes a step.
@@ -17,11 +17,14 @@
 /// process (writes then fail with EPIPE, reported as an exec_error).
 
 #include <functional>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "mechcheck/audit/black_box.hpp"
 #include "mechcheck/audit/drivers.hpp"
+#include "mechcheck/audit/engines.hpp"
 
 namespace mechcheck::audit {
 
@@ -64,7 +67,70 @@ struct exec_driver_target {
 /// Throws as exec_stepper does.
 exec_driver_target exec_driver(const std::vector<std::string>& command, const exec_options& options = {});
 
+/// A physics engine a child serves (its handshake's kind "engine"): its integrators, each an
+/// engine_integrator named exec::<the handshake's name>::<the integrator's name>, audited by
+/// audit_engine. Each run is a scenario in engine-neutral terms ("start", which the child
+/// may refuse), batches of steps ("step": n steps of h, the state read after the last or
+/// after each -- one round trip for a study's run, one for a thousand steps of the long
+/// run), "end". The cost of a step is the child's own clock around its steps.
+struct exec_engine_target {
+  std::vector<engine_integrator> integrators;
+  /// The inertia of the engine's shapes where its handshake offers them ("shapes": true).
+  std::optional<engine_shapes> shapes;
+  std::function<int()> failures;
+  std::function<std::string()> last_failure;
+};
+
+/// Throws as exec_stepper does.
+exec_engine_target exec_engine(const std::vector<std::string>& command, const exec_options& options = {});
+
 /// The command as one line of text (arguments quoted where they need it), for messages.
 std::string command_text(const std::vector<std::string>& command);
+
+/// The protocol's reading of a child's lines, each on its own (what the parent does with every
+/// line; for the fuzzer and the tests). Each throws exec_error naming what is wrong for a line
+/// the protocol does not allow: not JSON, nested deeper than max_depth, not an object, a field
+/// missing or of the wrong type, a wrong count of numbers, a number that is not one or not
+/// finite, more than max_numbers values, a name longer than max_name, an origin or a reason
+/// longer than max_text.
+namespace exec_protocol {
+inline constexpr int max_depth = 16;
+inline constexpr std::size_t max_numbers = 1 << 17;
+inline constexpr std::size_t max_name = 256;
+inline constexpr std::size_t max_text = 4096;
+
+/// An engine child's integrator, as its handshake declares it.
+struct integrator_fields {
+  std::string name, origin;
+  claims declared;
+};
+
+/// A handshake's fields (docs/protocol.md).
+struct handshake_fields {
+  std::string name, origin;
+  claims declared;
+  method_structure structure;
+  bool decimal = false;  ///< "numbers": "decimal": the parent writes 17 significant digits
+  bool shapes = false;   ///< an engine that answers "shape" requests
+  std::vector<integrator_fields> integrators;  ///< kind "engine"
+};
+handshake_fields parse_handshake(std::string_view line, std::string_view kind);
+
+/// The n numbers of a reply's field (a step's or an integration's "y").
+std::vector<double> parse_numbers(std::string_view line, std::string_view field, int n);
+
+/// An engine's "step" reply for scenario s to a request of `steps` steps, read after each
+/// (`each`) or after the last: its readings, and its error and step ("at") when it has one.
+struct step_reply {
+  std::vector<body_reading> readings;
+  std::string error;
+  long at = 0;
+  double seconds = -1;  ///< the child's clock around the steps; -1: not given
+};
+step_reply parse_step_reply(std::string_view line, const scenario& s, long steps, bool each);
+
+/// A scenario as the parent sends it in a "start" (a JSON object).
+std::string scenario_json(const scenario& s, bool decimal = false);
+}  // namespace exec_protocol
 
 }  // namespace mechcheck::audit

@@ -1,4 +1,4 @@
-#include "mechcheck/audit/gsl.hpp"
+#include "mechcheck/audit/adapters/gsl.hpp"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>

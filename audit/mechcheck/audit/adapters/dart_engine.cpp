@@ -1,4 +1,4 @@
-#include "mechcheck/audit/dart_engine.hpp"
+#include "mechcheck/audit/adapters/dart_engine.hpp"
 
 #include <dart/config.hpp>
 #include <dart/constraint/BallJointConstraint.hpp>

@@ -1,4 +1,4 @@
-#include "mechcheck/audit/mujoco.hpp"
+#include "mechcheck/audit/adapters/mujoco.hpp"
 
 #include <mujoco/mujoco.h>
 

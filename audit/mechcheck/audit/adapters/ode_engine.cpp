@@ -1,4 +1,4 @@
-#include "mechcheck/audit/ode_engine.hpp"
+#include "mechcheck/audit/adapters/ode_engine.hpp"
 
 #include <ode/ode.h>
 

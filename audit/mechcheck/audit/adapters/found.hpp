@@ -11,25 +11,25 @@
 #include "mechcheck/audit/drivers.hpp"
 #include "mechcheck/audit/engines.hpp"
 #ifdef MECHCHECK_HAVE_GSL
-#include "mechcheck/audit/gsl.hpp"
+#include "mechcheck/audit/adapters/gsl.hpp"
 #endif
 #ifdef MECHCHECK_HAVE_ARKODE
-#include "mechcheck/audit/arkode.hpp"
+#include "mechcheck/audit/adapters/arkode.hpp"
 #endif
 #ifdef MECHCHECK_HAVE_MUJOCO
-#include "mechcheck/audit/mujoco.hpp"
+#include "mechcheck/audit/adapters/mujoco.hpp"
 #endif
 #ifdef MECHCHECK_HAVE_SIMBODY
-#include "mechcheck/audit/simbody.hpp"
+#include "mechcheck/audit/adapters/simbody.hpp"
 #endif
 #ifdef MECHCHECK_HAVE_BULLET
-#include "mechcheck/audit/bullet.hpp"
+#include "mechcheck/audit/adapters/bullet.hpp"
 #endif
 #ifdef MECHCHECK_HAVE_ODE
-#include "mechcheck/audit/ode_engine.hpp"
+#include "mechcheck/audit/adapters/ode_engine.hpp"
 #endif
 #ifdef MECHCHECK_HAVE_DART
-#include "mechcheck/audit/dart_engine.hpp"
+#include "mechcheck/audit/adapters/dart_engine.hpp"
 #endif
 
 namespace mechcheck::audit {
