@@ -18,7 +18,14 @@ except ImportError:
     # Debian's python3-scipy cannot be installed next to libboost1.81-dev (it depends on
     # python3-pythran, which depends on libboost-dev 1.74): ci/install-deps unpacks it here.
     sys.path.append("/opt/mechcheck/scipy/usr/lib/python3/dist-packages")
-    import scipy
+    try:
+        import scipy
+    except ImportError as e:
+        sys.stderr.write(f"scipy_driver.py: no SciPy for {sys.executable}: {e}\n")
+        sys.exit(1)
+if sys.argv[1:] == ["--version"]:  # for the build: which SciPy this client runs
+    print(scipy.__version__)
+    sys.exit(0)
 import numpy as np
 from scipy.integrate import solve_ivp
 

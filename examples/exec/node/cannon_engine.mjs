@@ -1,0 +1,222 @@
+#!/usr/bin/env node
+// cannon-es (npm), a rigid-body engine in JavaScript, served to mechcheck's audit as an
+// engine (docs/protocol.md): World.step(h) at a fixed step, on every scenario it can express.
+//
+//   mechcheck-audit --exec-engine -- node examples/exec/node/cannon_engine.mjs
+//
+// The scenario's model: a Body of the scenario's mass with its principal moments set
+// directly (Body.inertia and invInertia, then updateInertiaWorld; no shapes, so nothing
+// recomputes them from a bounding box), no damping (cannon-es's default linear and angular
+// damping of 0.01 set to 0), the body at its centre of mass (cannon-es's body origin);
+// gravity as World.gravity; the central force and the mutual gravitation set in Body.force
+// before each step (cannon-es evaluates forces once a step, at its start); a hinge about y a
+// HingeConstraint, a ball a PointToPointConstraint, to a static body at the origin or between
+// links. cannon-es solves each joint as SPOOK equations whose parameters its Equation
+// constructor sets with a time step of 1/60 s, whatever the step: a compliant joint, not the
+// rigid one (said to the audit as the run's model_differs). The engine declares no order.
+import * as CANNON from 'cannon-es';
+import { readFileSync } from 'node:fs';
+import { Refused, frame, serveEngine } from './protocol.mjs';
+
+const version = JSON.parse(readFileSync(new URL('./node_modules/cannon-es/package.json', import.meta.url))).version;
+
+const v3 = (a) => new CANNON.Vec3(a[0], a[1], a[2]);
+const arr = (v) => [v.x, v.y, v.z];
+
+/** Reads the scenario's numbers (decimal strings) into numbers, recursively. */
+function parsed(s) {
+  const out = {};
+  for (const [k, v] of Object.entries(s)) {
+    if (Array.isArray(v)) out[k] = v.map((x) => (typeof x === 'object' ? parsed(x) : Number(x)));
+    else if (v !== null && typeof v === 'object') out[k] = parsed(v);
+    else out[k] = k === 'name' || k === 'structure' || k === 'joint' ? v : Number(v);
+  }
+  return out;
+}
+
+/** R (row-major) times a vector. */
+const rotate = (r, x) => [0, 1, 2].map((i) => r[3 * i] * x[0] + r[3 * i + 1] * x[1] + r[3 * i + 2] * x[2]);
+const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+const add = (a, b) => a.map((x, i) => x + b[i]);
+const sub = (a, b) => a.map((x, i) => x - b[i]);
+/** Rotation about y by angle, row-major. */
+const aboutY = (t) => [Math.cos(t), 0, Math.sin(t), 0, 1, 0, -Math.sin(t), 0, Math.cos(t)];
+const times = (a, b) => {
+  const out = new Array(9).fill(0);
+  for (let i = 0; i < 3; ++i) for (let j = 0; j < 3; ++j) for (let k = 0; k < 3; ++k) out[3 * i + j] += a[3 * i + k] * b[3 * k + j];
+  return out;
+};
+
+/** A quaternion (cannon-es's x, y, z, w) of a rotation matrix (row-major), Shepperd's method. */
+function quaternionOf(r) {
+  const [m00, m01, m02, m10, m11, m12, m20, m21, m22] = r;
+  const trace = m00 + m11 + m22;
+  let x, y, z, w;
+  if (trace > 0) {
+    const s = 2 * Math.sqrt(1 + trace);
+    w = s / 4, x = (m21 - m12) / s, y = (m02 - m20) / s, z = (m10 - m01) / s;
+  } else if (m00 > m11 && m00 > m22) {
+    const s = 2 * Math.sqrt(1 + m00 - m11 - m22);
+    w = (m21 - m12) / s, x = s / 4, y = (m01 + m10) / s, z = (m02 + m20) / s;
+  } else if (m11 > m22) {
+    const s = 2 * Math.sqrt(1 + m11 - m00 - m22);
+    w = (m02 - m20) / s, x = (m01 + m10) / s, y = s / 4, z = (m12 + m21) / s;
+  } else {
+    const s = 2 * Math.sqrt(1 + m22 - m00 - m11);
+    w = (m10 - m01) / s, x = (m02 + m20) / s, y = (m12 + m21) / s, z = s / 4;
+  }
+  return new CANNON.Quaternion(x, y, z, w);
+}
+
+function rotationOf(q) {
+  const m = new CANNON.Mat3();
+  m.setRotationFromQuaternion(q);
+  return Array.from(m.elements); // row-major
+}
+
+/** A body of mass m with principal moments `inertia` along its axes, at its centre of mass. */
+function body(mass, inertia, rotation, position, velocity, omega) {
+  const b = new CANNON.Body({ mass, linearDamping: 0, angularDamping: 0 });
+  b.inertia.set(inertia[0], inertia[1], inertia[2]);
+  b.invInertia.set(1 / inertia[0], 1 / inertia[1], 1 / inertia[2]);
+  b.quaternion.copy(quaternionOf(rotation));
+  b.position.copy(v3(position));
+  b.velocity.copy(v3(velocity));
+  b.angularVelocity.copy(v3(omega));
+  b.updateInertiaWorld(true);
+  return b;
+}
+
+const soft =
+  "cannon-es solves each joint as SPOOK equations (stiffness 1e7, relaxation 4) whose parameters its Equation " +
+  'constructor sets with a time step of 1/60 s whatever the step (its documentation: "note the hardcoded refresh ' +
+  'rate"), with 10 Gauss-Seidel iterations: it integrates a compliant joint, not the rigid one';
+
+class Run {
+  constructor(integrator, scenario) {
+    if (integrator !== 'World.step') throw new Refused(`no integrator ${integrator}`);
+    const s = parsed(scenario);
+    this.s = s;
+    const world = new CANNON.World();
+    world.gravity.set(0, 0, -s.gravity);
+    this.world = world;
+    this.bodies = [];
+    const ground = new CANNON.Body({ mass: 0 });
+    world.addBody(ground);
+    if (s.structure === 'one_body') {
+      const x = s.joint === 'free' ? s.position0 : rotate(s.rotation0, s.com);
+      const v = s.joint === 'free' ? s.velocity0 : cross(s.omega0, x);
+      const b = body(s.mass, s.inertia, s.rotation0, x, v, s.omega0);
+      world.addBody(b);
+      this.bodies.push(b);
+      const pivot = v3(s.com.map((c) => -c)); // the pivot in the body's frame (its origin at the centre of mass)
+      if (s.joint === 'hinge_y')
+        world.addConstraint(new CANNON.HingeConstraint(ground, b, { pivotA: v3([0, 0, 0]), axisA: v3([0, 1, 0]), pivotB: pivot, axisB: v3([0, 1, 0]) }));
+      else if (s.joint === 'ball') world.addConstraint(new CANNON.PointToPointConstraint(ground, v3([0, 0, 0]), b, pivot));
+      if (s.joint !== 'free') this.modelDiffers = soft;
+    } else if (s.structure === 'chain') {
+      // Each link's frame: its parent's rotated about y by its joint angle, at its hinge.
+      let rotation = [1, 0, 0, 0, 1, 0, 0, 0, 1], origin = [0, 0, 0], omega = [0, 0, 0], velocity = [0, 0, 0];
+      let parent = ground, parentCom = [0, 0, 0];
+      for (const l of s.links) {
+        const hinge = add(origin, rotate(rotation, l.hinge)); // world
+        const hingeVelocity = add(velocity, cross(omega, sub(hinge, origin)));
+        rotation = times(rotation, aboutY(l.angle0));
+        omega = add(omega, [0, l.rate0, 0]);
+        origin = hinge;
+        velocity = hingeVelocity;
+        const com = add(origin, rotate(rotation, l.com));
+        const b = body(l.mass, l.inertia, rotation, com, add(velocity, cross(omega, sub(com, origin))), omega);
+        world.addBody(b);
+        this.bodies.push(b);
+        world.addConstraint(
+          new CANNON.HingeConstraint(parent, b, {
+            pivotA: v3(sub(l.hinge, parentCom)),
+            axisA: v3([0, 1, 0]),
+            pivotB: v3(l.com.map((c) => -c)),
+            axisB: v3([0, 1, 0]),
+          }),
+        );
+        parent = b;
+        parentCom = l.com;
+      }
+      if (s.loop)
+        world.addConstraint(
+          new CANNON.HingeConstraint(parent, ground, {
+            pivotA: v3(sub(s.loop.point, parentCom)),
+            axisA: v3([0, 1, 0]),
+            pivotB: v3(s.loop.anchor),
+            axisB: v3([0, 1, 0]),
+          }),
+        );
+      this.modelDiffers = soft;
+    } else {
+      for (const l of s.links) {
+        const b = body(l.mass, l.inertia, [1, 0, 0, 0, 1, 0, 0, 0, 1], l.position0, l.velocity0, [0, 0, 0]);
+        world.addBody(b);
+        this.bodies.push(b);
+      }
+    }
+    // No contacts: the scenarios' bodies have no shapes, and nothing collides.
+    this.steps = 0;
+  }
+
+  /** The scenario's forces on the centres of mass, from the current state. */
+  applyForces() {
+    const s = this.s;
+    if (s.central !== 0) {
+      const b = this.bodies[0];
+      const x = arr(b.position), r = Math.hypot(...x);
+      b.force.set(...x.map((xi) => (-s.mass * s.central * xi) / (r * r * r)));
+    }
+    if (s.gravitation !== 0) {
+      for (let a = 0; a < this.bodies.length; ++a)
+        for (let c = a + 1; c < this.bodies.length; ++c) {
+          const r = sub(arr(this.bodies[c].position), arr(this.bodies[a].position)), d = Math.hypot(...r);
+          const f = r.map((ri) => ((s.gravitation * s.links[a].mass * s.links[c].mass) / (d * d * d)) * ri);
+          this.bodies[a].force.vadd(v3(f), this.bodies[a].force);
+          this.bodies[c].force.vsub(v3(f), this.bodies[c].force);
+        }
+    }
+  }
+
+  step(h) {
+    ++this.steps;
+    this.applyForces();
+    this.world.step(h);
+    for (const b of this.bodies)
+      for (const x of [...arr(b.position), ...arr(b.velocity), ...arr(b.angularVelocity)])
+        if (!Number.isFinite(x)) throw new Error(`cannon-es ${version}: step ${this.steps}: the state is not finite`);
+  }
+
+  reading() {
+    const frames = this.bodies.map((b) => frame(rotationOf(b.quaternion), arr(b.position), arr(b.velocity), arr(b.angularVelocity)));
+    return this.s.structure === 'one_body' ? { frame: frames[0] } : { links: frames };
+  }
+}
+
+/** The principal moments cannon-es computes for a shape: a Body of the shape's mass with the
+ * shape added (Body.addShape calls updateMassProperties), its Body.inertia. */
+function moments(shape) {
+  const [a, b] = shape.size;
+  const body = new CANNON.Body({ mass: shape.mass });
+  if (shape.name === 'box') body.addShape(new CANNON.Box(v3(shape.size.map((x) => x / 2))));
+  else if (shape.name === 'sphere') body.addShape(new CANNON.Sphere(a));
+  else if (shape.name === 'cylinder') body.addShape(new CANNON.Cylinder(a, a, b, 32));
+  else if (shape.name === 'cone') body.addShape(new CANNON.Cylinder(0, a, b, 32));
+  else if (shape.name === 'two_spheres') {
+    body.addShape(new CANNON.Sphere(a), v3([b, 0, 0]));
+    body.addShape(new CANNON.Sphere(a), v3([-b, 0, 0]));
+  } else throw new Refused(`cannon-es ${version} has no ${shape.name} shape`);
+  return arr(body.inertia);
+}
+
+await serveEngine(
+  {
+    name: 'cannon_es',
+    origin: `cannon-es ${version} (npm) in Node ${process.version}: World.step(h), one internalStep of h; Body.integrate ("Use new velocity - leap frog", a code comment: velocity from the force, then position and quaternion from the new velocities)`,
+    integrators: [{ name: 'World.step', origin: 'the only integrator; its documentation declares no order' }],
+  },
+  (integrator, scenario) => new Run(integrator, scenario),
+  moments,
+);

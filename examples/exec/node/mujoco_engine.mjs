@@ -1,0 +1,302 @@
+#!/usr/bin/env node
+// MuJoCo's official WebAssembly build (npm @mujoco/mujoco) served to mechcheck's audit as an
+// engine (docs/protocol.md): its integrators Euler, RK4, implicit and implicitfast, and
+// RK4/dexp_corrected (the classical RK4 tableau on mj_forward with the orientation integrated
+// as a Runge-Kutta-Munthe-Kaas method: the control for RK4's orientation), on every scenario
+// the bindings can express.
+//
+//   mechcheck-audit --exec-engine -- node examples/exec/node/mujoco_engine.mjs
+//
+// The scenario's model as MJCF (the same mapping as mechcheck's C++ adapter for Debian's
+// MuJoCo 2.2.2, audit/mechcheck/audit/adapters/mujoco.cpp): a body with <inertial>, a free,
+// hinge or ball joint; a chain as nested bodies with hinges about y placed at their start
+// angles (joint ref), its loop an equality `connect`; free bodies each with a free joint.
+// The central force and the mutual gravitation: the bindings expose no passive-force
+// callback (mjcb_passive), so the force is set in qfrc_applied from the state at the start of
+// each step -- what a callback would give to a method that evaluates forces once a step
+// (Euler, implicit, implicitfast), not to RK4's four stages: refused there.
+import loadMujoco from '@mujoco/mujoco';
+import { Refused, frame, serveEngine } from './protocol.mjs';
+
+const mj = await loadMujoco();
+const version = mj.mj_versionString();
+const enumValue = (e) => e.value;
+const INT = mj.mjtIntegrator;
+
+// The integrators, their mjtIntegrator names and their comments in mjtype.h.
+const integrators = [
+  { name: 'Euler', value: 'mjINT_EULER', words: 'semi-implicit Euler', order: 1 },
+  { name: 'RK4', value: 'mjINT_RK4', words: '4th-order Runge Kutta', order: 4 },
+  { name: 'implicit', value: 'mjINT_IMPLICIT', words: 'implicit in velocity', order: 1 },
+  { name: 'implicitfast', value: 'mjINT_IMPLICITFAST', words: 'implicit in velocity, no rne derivative', order: 1 },
+];
+for (const i of integrators) if (INT[i.value] === undefined) throw new Error(`MuJoCo ${version} has no ${i.value}`);
+const xmlName = { Euler: 'Euler', RK4: 'RK4', implicit: 'implicit', implicitfast: 'implicitfast' };
+
+const text = (x) => String(x); // the shortest decimal that reads back exactly
+const vec = (v) => v.map(text).join(' ');
+
+/** The MJCF of a scenario. */
+function mjcf(s, integrator) {
+  const option = `<compiler angle="radian"/><option timestep="0.01" gravity="0 0 ${text(-s.gravity)}" integrator="${xmlName[integrator]}"/>`;
+  const inertial = (b) => `<inertial pos="${vec(b.com)}" mass="${text(b.mass)}" diaginertia="${vec(b.inertia)}"/>`;
+  if (s.structure === 'one_body') {
+    const joint = { free: '<freejoint/>', hinge_y: '<joint type="hinge" axis="0 1 0"/>', ball: '<joint type="ball"/>' }[s.joint];
+    return `<mujoco>${option}<worldbody><body>${joint}${inertial(s)}</body></worldbody></mujoco>`;
+  }
+  let xml = `<mujoco>${option}<worldbody>`;
+  if (s.structure === 'chain') {
+    s.links.forEach((l, k) => {
+      xml += `<body name="link${k}" pos="${vec(l.hinge)}" axisangle="0 1 0 ${text(l.angle0)}">`;
+      xml += `<joint type="hinge" axis="0 1 0" ref="${text(l.angle0)}"/>${inertial(l)}`;
+    });
+    xml += '</body>'.repeat(s.links.length) + '</worldbody>';
+    if (s.loop) xml += `<equality><connect body1="link${s.links.length - 1}" anchor="${vec(s.loop.point)}"/></equality>`;
+  } else {
+    for (const l of s.links) xml += `<body><freejoint/>${inertial(l)}</body>`;
+    xml += '</worldbody>';
+  }
+  return xml + '</mujoco>';
+}
+
+/** Reads the scenario's numbers (decimal strings) into numbers, recursively. */
+function parsed(s) {
+  const out = {};
+  for (const [k, v] of Object.entries(s)) {
+    if (Array.isArray(v)) out[k] = v.map((x) => (typeof x === 'object' ? parsed(x) : Number(x)));
+    else if (v !== null && typeof v === 'object') out[k] = parsed(v);
+    else out[k] = k === 'name' || k === 'structure' || k === 'joint' ? v : Number(v);
+  }
+  return out;
+}
+
+/** The classical RK4 on mj_forward with each stage's body-frame angular velocity through
+ * the dexp^-1 series to degree 2 (mechcheck's correction of mj_RungeKutta; the C++ adapter's
+ * rk4_dexp_corrected, line for line). */
+function rk4DexpCorrected(m, d, h) {
+  const nq = m.nq, nv = m.nv;
+  const q0 = Float64Array.from(d.qpos), v0 = Float64Array.from(d.qvel), t0 = d.time;
+  const a = [[0, 0, 0], [0.5, 0, 0], [0, 0.5, 0], [0, 0, 1]], b = [1 / 6, 1 / 3, 1 / 3, 1 / 6], c = [0, 0.5, 0.5, 1];
+  const k = [], acc = [];
+  const rotations = [];
+  for (let j = 0; j < m.njnt; ++j) {
+    const type = m.jnt_type[j];
+    if (type === 0 /* free */) rotations.push(m.jnt_dofadr[j] + 3);
+    else if (type === 1 /* ball */) rotations.push(m.jnt_dofadr[j]);
+  }
+  const cross = (x, y) => [x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]];
+  for (let j = 0; j < 4; ++j) {
+    const mix = new Array(nv).fill(0), v = Array.from(v0);
+    for (let l = 0; l < j; ++l)
+      for (let i = 0; i < nv; ++i) {
+        mix[i] += a[j][l] * k[l][i];
+        v[i] += h * a[j][l] * acc[l][i];
+      }
+    d.qpos.set(q0);
+    mj.mj_integratePos(m, d.qpos, mix, h);
+    d.qvel.set(v);
+    d.time = t0 + c[j] * h;
+    mj.mj_forward(m, d);
+    acc.push(Float64Array.from(d.qacc));
+    const kj = Array.from(v);
+    for (const adr of rotations) {
+      const theta = [0, 1, 2].map((i) => h * mix[adr + i]);
+      const w = [0, 1, 2].map((i) => v[adr + i]);
+      const tw = cross(theta, w), ttw = cross(theta, tw);
+      for (let i = 0; i < 3; ++i) kj[adr + i] = w[i] + tw[i] / 2 + ttw[i] / 12;
+    }
+    k.push(kj);
+  }
+  const mix = new Array(nv).fill(0), v = Array.from(v0);
+  for (let j = 0; j < 4; ++j)
+    for (let i = 0; i < nv; ++i) {
+      mix[i] += b[j] * k[j][i];
+      v[i] += h * b[j] * acc[j][i];
+    }
+  d.qpos.set(q0);
+  mj.mj_integratePos(m, d.qpos, mix, h);
+  d.qvel.set(v);
+  d.time = t0 + h;
+}
+
+function quaternion(rowMajor) {
+  const q = new mj.DoubleBuffer(4);
+  try {
+    mj.mju_mat2Quat(q, rowMajor);
+    return Array.from(q.GetView());
+  } finally {
+    q.delete();
+  }
+}
+
+class Run {
+  constructor(integrator, scenario) {
+    this.name = `MuJoCo ${version} ${integrator}`;
+    const s = parsed(scenario);
+    this.s = s;
+    this.dexp = integrator === 'RK4/dexp_corrected';
+    const base = this.dexp ? 'RK4' : integrator;
+    if (!(base in xmlName)) throw new Refused(`no integrator ${integrator}`);
+    this.forced = s.central !== 0 || s.gravitation !== 0;
+    if (this.forced && base === 'RK4')
+      throw new Refused(
+        'the WebAssembly bindings expose no passive-force callback (mjcb_passive): a force set in qfrc_applied ' +
+          "is held at the step's start over RK4's four stages, not the scenario's force",
+      );
+    if (s.central !== 0 && (s.structure !== 'one_body' || s.joint !== 'free'))
+      throw new Refused('the central force is applied to a free body only');
+    this.m = mj.MjModel.from_xml_string(mjcf(s, base));
+    this.d = new mj.MjData(this.m);
+    this.velocity = new mj.DoubleBuffer(6);
+    const d = this.d;
+    if (s.structure === 'chain') {
+      s.links.forEach((l, k) => {
+        d.qpos[k] = l.angle0;
+        d.qvel[k] = l.rate0;
+      });
+    } else if (s.structure === 'free_bodies') {
+      s.links.forEach((l, k) => {
+        d.qpos.set([...l.position0, 1, 0, 0, 0], 7 * k);
+        d.qvel.set([...l.velocity0, 0, 0, 0], 6 * k);
+      });
+    } else {
+      const r = s.rotation0; // row-major, body to world
+      const w = [0, 1, 2].map((i) => r[i] * s.omega0[0] + r[3 + i] * s.omega0[1] + r[6 + i] * s.omega0[2]); // R^T omega
+      if (s.joint === 'free') {
+        d.qpos.set([...s.position0, ...quaternion(r)]);
+        d.qvel.set([...s.velocity0, ...w]);
+      } else if (s.joint === 'hinge_y') {
+        d.qpos[0] = Math.atan2(r[2], r[0]);
+        d.qvel[0] = s.omega0[1];
+      } else {
+        d.qpos.set(quaternion(r));
+        d.qvel.set(w);
+      }
+    }
+    mj.mj_forward(this.m, d);
+    this.steps = 0;
+    if (s.loop)
+      this.modelDiffers =
+        'MuJoCo closes the loop with a soft equality constraint (connect, default solref 0.02 1: a time constant ' +
+        "of 0.02 s, documented in MuJoCo's Modeling chapter, section Solver parameters): it integrates a compliant " +
+        'linkage, not the rigid one';
+  }
+
+  /** The force of the scenario on each free joint, in qfrc_applied, from the current state. */
+  applyForces() {
+    const s = this.s, d = this.d;
+    d.qfrc_applied.fill(0);
+    if (s.central !== 0) {
+      const x = [d.qpos[0], d.qpos[1], d.qpos[2]];
+      const r = Math.hypot(...x);
+      for (let i = 0; i < 3; ++i) d.qfrc_applied[i] = (-s.mass * s.central * x[i]) / (r * r * r);
+    }
+    if (s.gravitation !== 0) {
+      const n = s.links.length;
+      for (let a = 0; a < n; ++a)
+        for (let b = a + 1; b < n; ++b) {
+          const r = [0, 1, 2].map((i) => d.qpos[7 * b + i] - d.qpos[7 * a + i]);
+          const dist = Math.hypot(...r);
+          const scale = (s.gravitation * s.links[a].mass * s.links[b].mass) / (dist * dist * dist);
+          for (let i = 0; i < 3; ++i) {
+            d.qfrc_applied[6 * a + i] += scale * r[i];
+            d.qfrc_applied[6 * b + i] -= scale * r[i];
+          }
+        }
+    }
+  }
+
+  step(h) {
+    ++this.steps;
+    this.m.opt.timestep = h;
+    if (this.forced) this.applyForces();
+    if (this.dexp) rk4DexpCorrected(this.m, this.d, h);
+    else mj.mj_step(this.m, this.d);
+    const warnings = this.d.warning;
+    for (let i = 0; i < warnings.size(); ++i) {
+      const w = warnings.get(i);
+      const count = w.number;
+      w.delete?.();
+      if (count > 0) throw new Error(`${this.name}: step ${this.steps}: MuJoCo warning ${i}`);
+    }
+    for (let i = 0; i < this.m.nq; ++i)
+      if (!Number.isFinite(this.d.qpos[i])) throw new Error(`${this.name}: step ${this.steps}: qpos[${i}] is not finite`);
+  }
+
+  reading() {
+    const m = this.m, d = this.d;
+    // The positions and velocities of the state mj_step left (its xpos and cvel are those
+    // of the step's start).
+    mj.mj_kinematics(m, d);
+    mj.mj_comPos(m, d);
+    mj.mj_comVel(m, d);
+    const frameOf = (b) => {
+      mj.mj_objectVelocity(m, d, enumValue(mj.mjtObj.mjOBJ_BODY), b, this.velocity, 0);
+      const v = Array.from(this.velocity.GetView()); // (angular, linear) at xipos, world axes
+      return frame(Array.from(d.xmat.subarray(9 * b, 9 * b + 9)), Array.from(d.xipos.subarray(3 * b, 3 * b + 3)), v.slice(3), v.slice(0, 3));
+    };
+    if (this.s.structure !== 'one_body') {
+      const links = [];
+      for (let b = 1; b < m.nbody; ++b) links.push(frameOf(b));
+      if (this.s.structure === 'chain') return { links, q: Array.from(d.qpos), v: Array.from(d.qvel) };
+      return { links };
+    }
+    const out = { frame: frameOf(1) };
+    if (this.s.joint === 'hinge_y') Object.assign(out, { q: [d.qpos[0]], v: [d.qvel[0]] });
+    return out;
+  }
+
+  free() {
+    this.velocity.delete();
+    this.d.delete();
+    this.m.delete();
+  }
+}
+
+const declared = integrators.map((i) => ({
+  name: i.name,
+  origin:
+    `mjtIntegrator ${i.value} (mjtype.h: "${i.words}"); ` +
+    `declared order ${i.order}${i.name === 'RK4' ? ' (the name)' : ' (a first-order method by its description)'}`,
+  claims: { order: i.order },
+}));
+declared.push({
+  name: 'RK4/dexp_corrected',
+  origin:
+    'mj_forward at each of the four stages of the classical RK4 tableau, the orientation integrated as a ' +
+    "Runge-Kutta-Munthe-Kaas method (dexp^-1 to degree 2): mechcheck's correction of mj_RungeKutta, declared order 4",
+  claims: { order: 4 },
+});
+
+/** The principal moments MuJoCo computes for a shape: a body without <inertial> whose geom
+ * carries the mass (inertiafromgeom), mjModel.body_inertia after loading. */
+function moments(shape) {
+  const [a, b, c] = shape.size, m = text(shape.mass);
+  const geoms = {
+    box: `<geom type="box" size="${vec([a / 2, b / 2, c / 2])}" mass="${m}"/>`,
+    sphere: `<geom type="sphere" size="${text(a)}" mass="${m}"/>`,
+    cylinder: `<geom type="cylinder" size="${vec([a, b / 2])}" mass="${m}"/>`,
+    capsule: `<geom type="capsule" size="${vec([a, b / 2])}" mass="${m}"/>`,
+    ellipsoid: `<geom type="ellipsoid" size="${vec([a, b, c])}" mass="${m}"/>`,
+    two_spheres:
+      `<geom type="sphere" size="${text(a)}" pos="${text(b)} 0 0" mass="${text(shape.mass / 2)}"/>` +
+      `<geom type="sphere" size="${text(a)}" pos="${text(-b)} 0 0" mass="${text(shape.mass / 2)}"/>`,
+  }[shape.name];
+  if (!geoms) throw new Refused(`MuJoCo ${version} has no ${shape.name} geom`);
+  const model = mj.MjModel.from_xml_string(`<mujoco><worldbody><body><freejoint/>${geoms}</body></worldbody></mujoco>`);
+  try {
+    return Array.from(model.body_inertia.subarray(3, 6));
+  } finally {
+    model.delete();
+  }
+}
+
+await serveEngine(
+  {
+    name: `mujoco_wasm`,
+    origin: `MuJoCo ${version}, npm @mujoco/mujoco (the official WebAssembly build) in Node ${process.version}; the model from an MJCF string, mj_step at fixed timestep`,
+    integrators: declared,
+  },
+  (integrator, scenario) => new Run(integrator, scenario),
+  moments,
+);

@@ -1,0 +1,91 @@
+// The engine side of mechcheck's exec protocol (docs/protocol.md, version 1) for Node
+// clients: one JSON object a line on standard input and output. The handshake asks for
+// decimal numbers (17 significant digits, which Number() reads exactly); replies carry JSON
+// numbers (JSON.stringify writes the shortest decimal that reads back exactly).
+//
+// serveEngine(hello, start, moments) answers the audit until it closes our input.
+// start(integrator, scenario) builds a run, or throws Refused for a scenario the engine cannot
+// express; a run has step(h) (throws on the engine's failure), reading() and optionally
+// modelDiffers and free(). moments(shape) (optional) gives the principal moments the engine
+// computes for a shape ({name, mass, size}), or throws Refused for a shape it does not offer.
+import readline from 'node:readline';
+
+/** A scenario the engine cannot express: the audit lists it as refused, with these words. */
+export class Refused extends Error {}
+
+function send(message) {
+  process.stdout.write(JSON.stringify(message) + '\n');
+}
+
+/** A frame of the protocol: rotation (row-major), centre of mass, its velocity, omega. */
+export function frame(rotation, position, velocity, omega) {
+  const f = [...rotation, ...position, ...velocity, ...omega];
+  if (f.length !== 18) throw new Error(`a frame of ${f.length} numbers`);
+  f.forEach((x, i) => {
+    if (!Number.isFinite(x)) throw new Error(`the state is not finite (frame number ${i})`);
+  });
+  return f;
+}
+
+/** The scenario's numbers, read from the parent's decimal strings. */
+export function numbers(a) {
+  return a.map(Number);
+}
+
+export async function serveEngine(hello, start, moments) {
+  send({ protocol: 'mechcheck', version: 1, kind: 'engine', numbers: 'decimal', shapes: !!moments, ...hello });
+  const runs = new Map();
+  const lines = readline.createInterface({ input: process.stdin, crlfDelay: Infinity });
+  for await (const line of lines) {
+    const r = JSON.parse(line);
+    if (r.op === 'start') {
+      try {
+        const run = start(r.integrator, r.scenario);
+        runs.set(r.run, run);
+        const reply = { ok: true, reading: run.reading() };
+        if (run.modelDiffers) reply.model_differs = run.modelDiffers;
+        send(reply);
+      } catch (e) {
+        send(e instanceof Refused ? { refused: e.message } : { error: String(e?.message ?? e) });
+      }
+    } else if (r.op === 'step') {
+      const run = runs.get(r.run);
+      const h = Number(r.h);
+      const each = r.read === 'each';
+      const readings = [];
+      let seconds = 0;
+      let failed = null;
+      for (let k = 1; k <= r.n && !failed; ++k) {
+        try {
+          const t0 = process.hrtime.bigint();
+          run.step(h);
+          seconds += Number(process.hrtime.bigint() - t0) * 1e-9;
+          if (each || k === r.n) readings.push(run.reading());
+        } catch (e) {
+          failed = { error: String(e?.message ?? e), at: k };
+          if (each) failed.readings = readings;
+        }
+      }
+      if (failed) {
+        send(failed);
+      } else {
+        const reply = { readings };
+        if (r.timed) reply.seconds = seconds;
+        send(reply);
+      }
+    } else if (r.op === 'shape' && moments) {
+      try {
+        const m = moments({ name: r.shape.name, mass: Number(r.shape.mass), size: r.shape.size.map(Number) });
+        send({ moments: m });
+      } catch (e) {
+        send(e instanceof Refused ? { refused: e.message } : { error: String(e?.message ?? e) });
+      }
+    } else if (r.op === 'end') {
+      runs.get(r.run)?.free?.();
+      runs.delete(r.run);
+      send({ ok: true });
+    } else {
+      send({ error: `unknown op ${JSON.stringify(r.op)}` });
+    }
+  }
+}
