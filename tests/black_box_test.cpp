@@ -204,4 +204,67 @@ TEST(black_box, bad_input_and_failing_steps_are_typed_errors) {
   for (const auto& v : a.verdicts) EXPECT_NE(v.result, outcome::contradicted) << v.claim;
 }
 
+/// Velocity Verlet in C that takes its halves from ode_system's velocity and force (the
+/// calling convention of a splitting method): one force a step after the first, as the
+/// library's stormer_verlet counts.
+int c_verlet(double* y, double, double h, void* ctx) {
+  const auto& ode = *static_cast<const audit::ode_system*>(ctx);
+  const int nq = ode.nq, np = ode.dimension - ode.nq;
+  std::vector<double> f(static_cast<std::size_t>(np)), v(static_cast<std::size_t>(nq));
+  if (!ode.force || ode.force(0, y, f.data(), ode.self) != 0) return 7;
+  for (int i = 0; i < np; ++i) y[nq + i] += h / 2 * f[std::size_t(i)];
+  if (ode.velocity(0, y + nq, v.data(), ode.self) != 0) return 8;
+  for (int i = 0; i < nq; ++i) y[i] += h * v[std::size_t(i)];
+  if (ode.force(0, y, f.data(), ode.self) != 0) return 7;
+  for (int i = 0; i < np; ++i) y[nq + i] += h / 2 * f[std::size_t(i)];
+  return 0;
+}
+
+audit::black_box c_verlet_box() {
+  audit::black_box b;
+  b.name = "c_verlet";
+  b.declared.order = 2;
+  b.structure = {true, true};
+  b.create = [](const audit::ode_system& ode) -> void* { return new audit::ode_system(ode); };
+  b.step_status = &c_verlet;
+  b.destroy = [](void* ctx) { delete static_cast<audit::ode_system*>(ctx); };
+  return b;
+}
+
+TEST(black_box, a_splitting_method_in_c_takes_its_force_apart_and_is_counted_as_the_library_counts) {
+  audit::audit_options opt = quick();
+  opt.problems = {"kepler_e0.5", "pendulum"};
+  const auto boxed = audit::audit_stepper(audit::black_box_stepper(c_verlet_box()), opt);
+  const auto library = audit::audit_stepper(audit::method<stormer_verlet, double>("stormer_verlet"), opt);
+  ASSERT_EQ(boxed.problems.size(), library.problems.size());
+  for (std::size_t i = 0; i < boxed.problems.size(); ++i) {
+    // Two forces a step (the box does not reuse the last one), one for the library's FSAL
+    // Verlet: the force calls are what is counted, not the whole right-hand side's 3.
+    EXPECT_EQ(boxed.problems[i].evaluations_per_step, 2.0) << boxed.problems[i].problem;
+    EXPECT_LE(library.problems[i].evaluations_per_step, 2.0) << library.problems[i].problem;
+  }
+  expect(boxed, "order", outcome::confirmed);
+}
+
+TEST(black_box, a_c_step_reports_failure_by_its_status_and_the_run_ends_there_named) {
+  audit::black_box b = c_verlet_box();
+  b.step_status = [](double*, double, double, void*) { return 42; };
+  const auto stepper = audit::black_box_stepper(b);
+  const auto problems = audit::reference_problems<double>();
+  const auto& pr = problems.front();
+  auto step = stepper.make(pr.system);
+  audit::state<double> x = pr.initial;
+  try {
+    step(x, 0.125);
+    ADD_FAILURE() << "a step returning 42 was taken";
+  } catch (const convergence_error& e) {
+    EXPECT_NE(std::string(e.what()).find("c_verlet: step 1 at t = 0, h = 0.125 returned status 42"), std::string::npos)
+        << e.what();
+  }
+  // One step function, not two, not none.
+  audit::black_box both = c_verlet_box();
+  both.step = [](double*, double, double, void*) {};
+  EXPECT_THROW(audit::black_box_stepper(both), domain_error);
+}
+
 }  // namespace black_box_test

@@ -65,6 +65,22 @@ TEST(exec, a_verlet_child_is_audited_like_a_stepper_and_keeps_its_claims) {
   EXPECT_EQ(target.failures(), 0) << target.last_failure();
 }
 
+TEST(exec, a_child_that_takes_its_force_apart_is_counted_as_the_library_counts) {
+  audit::audit_options o = few_problems();  // the oscillator: separable
+  o.max_study_steps = 1 << 12;                 // h^2 ~ 1e-7 there: far above the floor
+  const auto whole = audit::exec_stepper(child("verlet"));
+  const auto split = audit::exec_stepper(child("verlet_split"));
+  const auto a = audit::audit_stepper(audit::black_box_stepper(whole.box), audit::reference_problems<double>(), o);
+  const auto b = audit::audit_stepper(audit::black_box_stepper(split.box), audit::reference_problems<double>(), o);
+  ASSERT_EQ(a.problems.size(), b.problems.size());
+  for (std::size_t i = 0; i < a.problems.size(); ++i) {
+    EXPECT_EQ(a.problems[i].evaluations_per_step, 3.0) << a.problems[i].problem;  // three rhs calls
+    EXPECT_EQ(b.problems[i].evaluations_per_step, 2.0) << b.problems[i].problem;  // two forces
+  }
+  EXPECT_EQ(b.find("order")->result, outcome::confirmed) << b.find("order")->evidence;
+  EXPECT_EQ(split.failures(), 0) << split.last_failure();
+}
+
 TEST(exec, a_child_that_claims_too_much_is_contradicted) {
   const auto target = audit::exec_stepper(child("euler_says_2"));
   const auto a = audit::audit_stepper(audit::black_box_stepper(target.box), audit::reference_problems<double>(), few_problems());

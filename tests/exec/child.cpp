@@ -4,7 +4,8 @@
 //
 // Usage: mechcheck_exec_child MODE
 //   verlet       velocity Verlet on y = (q, p), q and p of equal length (canonical,
-//                separable); claims order 2, symplectic, symmetric
+//                separable); claims order 2, symplectic, symmetric; each half from "rhs"
+//   verlet_split the same, its force and velocity from "force" and "velocity"
 //   rk4          classical RK4 on any y; claims order 4
 //   euler_says_2 explicit Euler; claims order 2 (the audit must contradict it)
 //   crash        abort() at the first step          hang       sleeps at the first step
@@ -81,6 +82,18 @@ vec rhs(double t, const vec& y) {
   return nums(r["dydt"]);
 }
 
+/// A separable problem's halves from the parent: -dH/dq at q, dH/dp at p.
+vec half(const char* op, const char* in, const char* out, double t, const vec& x) {
+  send({{"op", op}, {"t", hex(t)}, {in, hexes(x)}});
+  const json r = receive();
+  if (r.contains("error")) throw std::runtime_error(r["error"].get<std::string>());
+  return nums(r[out]);
+}
+
+/// The run's split (its start's "nq"), for verlet_split.
+std::map<long long, std::size_t> split_of;
+long long current_run = 0;
+
 vec axpy(const vec& y, double a, const vec& x) {
   vec out = y;
   for (std::size_t i = 0; i < y.size(); ++i) out[i] += a * x[i];
@@ -89,6 +102,18 @@ vec axpy(const vec& y, double a, const vec& x) {
 
 vec step(double t, double h, vec y) {
   const std::size_t n = y.size();
+  if (mode == "verlet_split") {  // the force and the velocity apart: 2 forces a step
+    const std::size_t m = split_of.at(current_run);
+    vec q(y.begin(), y.begin() + long(m)), p(y.begin() + long(m), y.end());
+    vec f = half("force", "q", "dpdt", t, q);
+    for (std::size_t i = 0; i < p.size(); ++i) p[i] += h / 2 * f[i];
+    const vec v = half("velocity", "p", "dqdt", t, p);
+    for (std::size_t i = 0; i < m; ++i) q[i] += h * v[i];
+    f = half("force", "q", "dpdt", t + h, q);
+    for (std::size_t i = 0; i < p.size(); ++i) p[i] += h / 2 * f[i];
+    q.insert(q.end(), p.begin(), p.end());
+    return q;
+  }
   if (mode == "verlet") {
     const std::size_t m = n / 2;  // q = y[0, m), p = y[m, n)
     vec f = rhs(t, y);
@@ -211,7 +236,7 @@ int main(int argc, char** argv) {
   const bool driver = mode == "driver" || mode == "driver_fails";
   json hello = {{"protocol", "mechcheck"}, {"version", mode == "version_2" ? 2 : 1}, {"kind", driver ? "driver" : "stepper"},
                 {"name", "test_child/" + mode}, {"origin", "tests/exec/child.cpp"}};
-  if (mode == "verlet")
+  if (mode == "verlet" || mode == "verlet_split")
     hello["claims"] = {{"order", 2}, {"symplectic", true}, {"symmetric", true}},
     hello["structure"] = {{"canonical", true}, {"separable", true}};
   else
@@ -221,9 +246,11 @@ int main(int argc, char** argv) {
     const json r = receive();
     const std::string op = r.value("op", "");
     if (op == "start" || op == "end") {
+      if (op == "start") split_of[r.value("run", 0LL)] = r.value("nq", std::size_t(0));
       send({{"ok", true}});
       continue;
     }
+    current_run = r.value("run", 0LL);
     if (op == "integrate" && driver) {
       // RK4 at h = tol^(1/4) (t1 - t0): a global error of order tol; or a reported failure.
       if (mode == "driver_fails") {

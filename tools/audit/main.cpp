@@ -325,7 +325,7 @@ int main(int argc, char** argv) {
   request.options.problems = problems;
   request.options.long_run_problems = long_run_problems;
   request.options.long_run_steps = long_run_steps;
-  request.options.timing = true;
+  request.options.timing = timing;
   if (!quiet) request.options.progress = progress;
 
   std::vector<audit::stepper_audit> audits;

@@ -2,12 +2,14 @@
 /// Black-box steppers: a double-only integrator with a C call, audited like any other.
 ///
 /// The integrator is a function
-///     void step(double* y, double t, double h, void* ctx);
+///     void step(double* y, double t, double h, void* ctx);      (C++: throws on failure)
+///     int step(double* y, double t, double h, void* ctx);       (C: returns 0, or a status)
 /// that advances y = (q, p) (the problem's state, q first) from t by h in place. For each
 /// run the audit calls `create` with the problem's first-order system y' = f(t, y) as C
 /// callbacks (ode_system: the right-hand side and, for implicit methods, its Jacobian
-/// df/dy by AD), and the context it returns goes to every step (and to `destroy` at the
-/// end of the run).
+/// df/dy by AD; on a separable problem its velocity and force apart, counted as the
+/// library's steppers count them), and the context it returns goes to every step (and to
+/// `destroy` at the end of the run).
 ///
 /// What the audit measures is what it measures for any stepper (audit.hpp), in double. A
 /// black box cannot run on AD scalars: the Jacobian of one step, for the symplectic
@@ -36,13 +38,27 @@ namespace mechcheck::audit {
 /// box. Both callbacks return 0 on success and -1 when they cannot evaluate (never throw).
 struct ode_system {
   int dimension = 0;
+  /// f(t, y): one evaluation of the whole vector field.
   int (*rhs)(double t, const double* y, double* dydt, void* self) = nullptr;
-  /// df/dy, row-major dimension x dimension, by forward AD through the problem.
+  /// df/dy, row-major dimension x dimension, by forward AD through the problem (not counted).
   int (*jacobian)(double t, const double* y, double* dfdy, void* self) = nullptr;
   void* self = nullptr;
+  /// The size of q in y = (q, p).
+  int nq = 0;
+  /// A separable problem's halves (H = T(p) + V(q): q' = dT/dp, p' = -dV/dq), for a method
+  /// that takes its velocity and its force apart (a splitting, an RKN method): each call of
+  /// `force` is one evaluation, as the library's own steppers count one, and `velocity`
+  /// none; calling `rhs` instead counts a whole evaluation for each half. Null on a problem
+  /// that is not separable.
+  int (*velocity)(double t, const double* p, double* dqdt, void* self) = nullptr;
+  int (*force)(double t, const double* q, double* dpdt, void* self) = nullptr;
 };
 
+/// A step in place: y (size ode_system::dimension) from t to t + h. A failure is thrown as
+/// a mechcheck::error (C++), or, for C code, returned by the c_step_status form: 0 for a
+/// step taken, anything else a failed step (the run ends there, its status named).
 using c_step = void (*)(double* y, double t, double h, void* ctx);
+using c_step_status = int (*)(double* y, double t, double h, void* ctx);
 
 /// A double-only stepper behind a C call.
 struct black_box {
@@ -56,7 +72,8 @@ struct black_box {
   method_structure structure;
   /// A context for the runs on one system (may be null for a stateless step).
   std::function<void*(const ode_system&)> create;
-  c_step step = nullptr;
+  c_step step = nullptr;                ///< the step (C++: throws on failure), or
+  c_step_status step_status = nullptr;  ///< the step returning a status (C: 0 is success)
   std::function<void(void*)> destroy;  ///< frees a context (empty: nothing to free)
 };
 
@@ -72,6 +89,11 @@ class c_view {
     ode_.rhs = &rhs;
     ode_.jacobian = &jacobian;
     ode_.self = this;
+    ode_.nq = static_cast<int>(nq);
+    if (system_.separable()) {
+      ode_.velocity = &velocity;
+      ode_.force = &force;
+    }
   }
   c_view(const c_view&) = delete;
   c_view& operator=(const c_view&) = delete;
@@ -98,6 +120,32 @@ class c_view {
       return 0;
     } catch (const std::exception& e) {
       v->error_ = std::string("the right-hand side failed: ") + e.what();
+      return -1;
+    }
+  }
+  static int velocity(double, const double* p, double* dqdt, void* self) {
+    auto* v = static_cast<c_view*>(self);
+    try {
+      const dynamic_vector<double> pv = Eigen::Map<const dynamic_vector<double>>(p, v->np_);
+      dynamic_vector<double> dq(v->nq_);
+      v->system_.velocity(pv, dq);
+      std::copy(dq.data(), dq.data() + v->nq_, dqdt);
+      return 0;
+    } catch (const std::exception& e) {
+      v->error_ = std::string("the velocity failed: ") + e.what();
+      return -1;
+    }
+  }
+  static int force(double, const double* q, double* dpdt, void* self) {
+    auto* v = static_cast<c_view*>(self);
+    try {
+      const dynamic_vector<double> qv = Eigen::Map<const dynamic_vector<double>>(q, v->nq_);
+      dynamic_vector<double> dp(v->np_);
+      v->system_.force(qv, dp);
+      std::copy(dp.data(), dp.data() + v->np_, dpdt);
+      return 0;
+    } catch (const std::exception& e) {
+      v->error_ = std::string("the force failed: ") + e.what();
       return -1;
     }
   }
@@ -158,7 +206,15 @@ class black_box_run {
     std::copy(x.p.data(), x.p.data() + np, y_.data() + nq);
     ++steps_;
     view_.clear_failure();
-    box_.step(y_.data(), t_, h, context_);
+    if (box_.step_status) {
+      const int status = box_.step_status(y_.data(), t_, h, context_);
+      if (status != 0)
+        throw convergence_error(box_.name + ": step " + std::to_string(steps_) + " at t = " + to_text(t_) +
+                                ", h = " + to_text(h) + " returned status " + std::to_string(status) +
+                                (view_.failure().empty() ? "" : " (" + view_.failure() + ")"));
+    } else {
+      box_.step(y_.data(), t_, h, context_);
+    }
     if (!view_.failure().empty())
       throw error(box_.name + ": step " + std::to_string(steps_) + " at t = " + to_text(t_) +
                   ", h = " + to_text(h) + ": " + view_.failure());
@@ -187,8 +243,9 @@ class black_box_run {
 /// finite differences. Throws domain_error for a box without a name or a step function.
 inline stepper_under_audit<double> black_box_stepper(black_box box) {
   if (box.name.empty()) throw domain_error("black_box_stepper: the stepper needs a name");
-  if (!box.step)
-    throw domain_error("black_box_stepper: " + box.name + ": the step function is null");
+  if (!box.step == !box.step_status)
+    throw domain_error("black_box_stepper: " + box.name +
+                       (box.step ? ": both step and step_status are set (one step function)" : ": the step function is null"));
   stepper_under_audit<double> s;
   s.name = box.name;
   s.origin = box.origin;
@@ -231,12 +288,25 @@ black_box library_stepper_as_black_box(std::string name, Eigen::Index nq_hint = 
                       dynamic_vector<double>& dq, dynamic_vector<double>& dp) const {
       call(q, p, dq, dp);
     }
+    // A separable problem's halves: its own callbacks (a force counted as one evaluation, a
+    // velocity as none), else the whole right-hand side.
     void velocity(const dynamic_vector<double>& p, dynamic_vector<double>& dq) const {
+      if (ode.velocity) {
+        dq.resize(nq);
+        if (ode.velocity(0, p.data(), dq.data(), ode.self) != 0)
+          throw error("library_stepper_as_black_box: the velocity failed");
+        return;
+      }
       dynamic_vector<double> dp = p;
       call(q_last, p, dq, dp);  // separable: dq does not depend on q
     }
     void force(const dynamic_vector<double>& q, dynamic_vector<double>& dp) const {
       q_last = q;
+      if (ode.force) {
+        dp.resize(ode.dimension - nq);
+        if (ode.force(0, q.data(), dp.data(), ode.self) != 0) throw error("library_stepper_as_black_box: the force failed");
+        return;
+      }
       dynamic_vector<double> dq = dp;
       dynamic_vector<double> p = dynamic_vector<double>::Zero(dp.size());
       call(q, p, dq, dp);  // separable: dp does not depend on p

@@ -532,13 +532,28 @@ struct run_context {
 serve_function problem_server(run_context& r) {
   return [&r](const json& request, const std::string& call) -> std::optional<json> {
     const json& op = request["op"];
+    const bool decimal = r.s->decimal;
+    if ((op == "force" && r.ode.force) || (op == "velocity" && r.ode.velocity)) {
+      // A separable problem's halves: force(t, q) -> dpdt, velocity(t, p) -> dqdt.
+      const bool force = op == "force";
+      const int nq = r.ode.nq, np = r.ode.dimension - r.ode.nq, in = force ? nq : np, out = force ? np : nq;
+      r.y.resize(std::size_t(in));
+      r.f.resize(std::size_t(out));
+      numbers_into(request, force ? "q" : "p", in, r.y.data(), call);
+      const double t = number_of(request.contains("t") ? request["t"] : json(0.0), call + ": t");
+      json answer;
+      if ((force ? r.ode.force : r.ode.velocity)(t, r.y.data(), r.f.data(), r.ode.self) == 0)
+        answer[force ? "dpdt" : "dqdt"] = numbers_json(r.f.data(), out, decimal);
+      else
+        answer["error"] = std::string("the ") + (force ? "force" : "velocity") + " cannot be evaluated there";
+      return answer;
+    }
     if (op != "rhs" && op != "jacobian") return std::nullopt;
     const int n = r.ode.dimension;
     r.y.resize(std::size_t(n));
     numbers_into(request, "y", n, r.y.data(), call);
     const double t = number_of(request.contains("t") ? request["t"] : json(0.0), call + ": t");
     json answer;
-    const bool decimal = r.s->decimal;
     if (op == "rhs") {
       r.f.resize(std::size_t(n));
       if (r.ode.rhs(t, r.y.data(), r.f.data(), r.ode.self) == 0)
@@ -562,7 +577,13 @@ void* create_run(const std::shared_ptr<session>& s, const ode_system& ode) {
   r->ode = ode;
   r->id = ++s->next_run;
   const std::string what = "start of run " + std::to_string(r->id);
-  const json reply = exchange(*s, {{"op", "start"}, {"run", r->id}, {"dimension", ode.dimension}}, what, problem_server(*r));
+  const json reply = exchange(*s,
+                              {{"op", "start"},
+                               {"run", r->id},
+                               {"dimension", ode.dimension},
+                               {"nq", ode.nq},
+                               {"separable", ode.force != nullptr}},
+                              what, problem_server(*r));
   if (reply.value("ok", false) != true) {
     s->failed("start refused");
     throw exec_error(s->prefix() + what + ": the child refused it: " + excerpt_json(reply));
