@@ -3,7 +3,7 @@
 
 The standard library only. Run it under the audit:
 
-    mechcheck-audit --exec-stepper -p oscillator -- python3 examples/exec/rk4_stepper.py
+    mechcheck-audit -o report --exec-stepper -p oscillator -- python3 examples/exec/rk4_stepper.py
 
 The audit sends the state and the step; the stepper asks the audit for the right-hand side
 f(t, y) at each stage and replies with the state after the step.

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """SciPy's solve_ivp served to mechcheck's audit as an adaptive driver (docs/protocol.md).
 
-    mechcheck-audit --exec-driver -- python3 examples/exec/scipy_driver.py RK45
+    mechcheck-audit -o report --exec-driver -- python3 examples/exec/scipy_driver.py RK45
 
 METHOD is one of solve_ivp's: RK45, RK23, DOP853, Radau, BDF, LSODA. The audit's tolerance
 is given as rtol = atol = tolerance; the implicit methods (Radau, BDF, LSODA) get the

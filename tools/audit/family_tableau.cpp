@@ -12,23 +12,7 @@ template <class T>
 std::vector<audit::stepper_under_audit<T>> steppers_of(const std::vector<audit::tableau_file>& files) {
   std::vector<audit::stepper_under_audit<T>> out;
   for (const auto& f : files)
-    for (const bool embedding : {false, true}) {
-      if (embedding && f.bhat.empty()) continue;
-      butcher_tableau<mpfr100> t = f.tableau;
-      if (embedding) t.b = f.bhat;
-      audit::claims c;
-      c.order = embedding ? f.embedding_order : f.order;
-      if (!embedding) {
-        c.symplectic = f.symplectic;
-        c.symmetric = f.symmetric;
-      }
-      // What its order conditions say at the precision its coefficients are given to.
-      audit::add_algebraic_claims(c, audit::order_conditions(t, 10, f.precision), f.precision_words);
-      out.push_back(audit::tableau_stepper<T>(
-          "tableau::" + f.name + (embedding ? "/embedding" : ""), t, c,
-          f.path + (f.source.empty() ? "" : " (" + f.source + ")") +
-              (embedding ? ", its embedding bhat" : "")));
-    }
+    for (auto& s : audit::tableau_file_steppers<T>(f)) out.push_back(std::move(s));
   return out;
 }
 }  // namespace

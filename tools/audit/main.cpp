@@ -1,23 +1,34 @@
-// mechcheck-audit: audits the library's steppers and Boost.Odeint's on the reference
-// problems, prints a table and writes audit.json, audit.md and SVG plots.
+// mechcheck-audit: audits one-step integrators (the library's, Boost.Odeint's, third-party
+// libraries', tableau files', a child process's), adaptive drivers and physics engines
+// against what they declare; prints a table and writes JSON, Markdown and SVG plots into the
+// directory -o names.
+//
+// Exit status: 0 when everything asked for was audited; 1 when an input was refused (a bad
+// option, a tableau file that cannot be read, a child that cannot be started: the others are
+// still audited and written); 2 when a claim --require names is contradicted; 3 when a child
+// failed during the audit (its runs are failed runs of the report). The largest applies.
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <map>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 
 #include "families.hpp"
-#include "patterns.hpp"
-#include "run_family.hpp"
+#include "mechcheck/audit/adapters/exec.hpp"
 #include "mechcheck/audit/adapters/found.hpp"
 #include "mechcheck/audit/problems/classic.hpp"
 #include "mechcheck/audit/report.hpp"
-#include "mechcheck/audit/adapters/exec.hpp"
 #include "mechcheck/audit/tableau_file.hpp"
+#include "patterns.hpp"
+#include "run_family.hpp"
 
 namespace {
 using namespace mechcheck;
@@ -44,10 +55,52 @@ std::vector<std::string> expanded(const std::vector<std::string>& names) {
     }
   return out;
 }
+
+/// Where the classical tableaus are: the installed share/mechcheck/tableaus next to this
+/// program's bin/, else the source tree's tableaus/ (a build tree's program).
+std::string tableau_directory() {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const auto installed = self.parent_path().parent_path() / "share" / "mechcheck" / "tableaus";
+    if (std::filesystem::is_directory(installed, ec)) return installed.lexically_normal().string();
+  }
+#ifdef MECHCHECK_SOURCE_TABLEAUS
+  if (std::filesystem::is_directory(MECHCHECK_SOURCE_TABLEAUS, ec)) return MECHCHECK_SOURCE_TABLEAUS;
+#endif
+  return "share/mechcheck/tableaus under the installation prefix";
+}
+
+/// The families ("mechcheck::", "odeint::", ...) of a list of names, for messages.
+std::string families_of(const std::vector<std::string>& names) {
+  std::vector<std::string> families;
+  for (const auto& n : names) {
+    const auto at = n.find("::");
+    const std::string f = at == std::string::npos ? n : n.substr(0, at + 2) + "*";
+    if (std::find(families.begin(), families.end(), f) == families.end()) families.push_back(f);
+  }
+  std::string out;
+  for (const auto& f : families) out += (out.empty() ? "" : ", ") + f;
+  return out;
+}
+
+/// Every pattern names something: a pattern that matches no name is a misspelling, refused
+/// with the names there are.
+bool every_pattern_matches(const char* option, const char* what, const std::vector<std::string>& patterns,
+                           const std::vector<std::string>& names) {
+  bool ok = true;
+  for (const auto& p : patterns)
+    if (std::none_of(names.begin(), names.end(), [&](const std::string& n) { return audit_tool::matches({p}, n); })) {
+      std::cerr << "mechcheck-audit: " << option << " '" << p << "' matches no " << what << "; this build has "
+                << names.size() << " of them, named " << families_of(names) << " (--list names each)\n";
+      ok = false;
+    }
+  return ok;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Everything after "--" is a child's command (--exec-stepper), passed as given.
+  // Everything after "--" is a child's command (--exec-*), passed as given.
   std::vector<std::string> child_command;
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]) == "--") {
@@ -56,12 +109,15 @@ int main(int argc, char** argv) {
       break;
     }
   CLI::App app{"mechcheck-audit: order, symplecticity, time symmetry, long-time energy "
-               "behaviour, first integrals and cost of one-step integrators, against what "
-               "they declare"};
+               "behaviour, first integrals and cost of one-step integrators, adaptive drivers and "
+               "physics engines, against what they declare"};
+  app.footer("Exit status: 0 all audited; 1 an input refused (the others are still audited and written); "
+             "2 a claim --require names is contradicted; 3 a child failed during the audit.\n"
+             "The classical tableaus (--tableau): " + tableau_directory());
   std::vector<std::string> steppers, problems, tiers = {"double", "mpfr50"};
   std::vector<std::string> long_run_problems = {"kepler_e0.5"};
   long long long_run_steps = 100000, long_run_steps_mpfr50 = 10000;
-  std::string output = "audit";
+  std::string output;
   std::vector<std::string> require;
   bool timing = false, list = false, quiet = false;
   app.add_option("-s,--stepper", steppers,
@@ -83,9 +139,13 @@ int main(int argc, char** argv) {
                  "steps of the long run in mpfr50 (0: none); its rounding is 1e-50, so the "
                  "run shows truncation behaviour only, and an implicit step costs ~1 ms")
       ->check(CLI::Range(0LL, 100000000LL));
-  app.add_option("-o,--output", output, "directory for audit.json, audit.md and the plots");
-  app.add_flag("--timing", timing, "put wall times into the files (not reproducible)");
-  app.add_flag("--list", list, "list the steppers and exit");
+  app.add_option("-o,--output", output,
+                 "the directory the report goes to (created): audit.json and audit.md for steppers, "
+                 "drivers.*, tableaus.*, engines.*, and the SVG plots; required unless --list");
+  app.add_flag("--timing", timing, "put wall times into the files (not reproducible; off by default)");
+  app.add_flag("--list", list,
+               "list what this build can audit -- steppers (with their tiers), adaptive drivers, engine "
+               "integrators, engine scenarios, problems -- filtered by the patterns given, and exit");
   app.add_option("--require", require,
                  "exit with status 2 when a claim of a stepper or engine integrator matching this pattern is "
                  "contradicted (e.g. 'mechcheck::*'; '*' for all)");
@@ -97,12 +157,10 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   std::vector<std::string> tableau_files;
   app.add_option("--tableau", tableau_files,
-                 "a Butcher tableau in JSON (docs/tableau-format.md; 12 classical ones in the "
-                 "source's tableaus/ and the installed share/mechcheck/tableaus/): its order "
-                 "conditions up to order 10 in mpfr100 at the precision its coefficients are given "
-                 "to, then its stepper audited as tableau::<name>; with no --stepper only the "
-                 "tableaus are audited")
-      ->check(CLI::ExistingFile);
+                 "a Butcher tableau in JSON (docs/tableau-format.md; the classical ones are in " + tableau_directory() +
+                     "): its order conditions up to order 10 in mpfr100 at the precision its coefficients are "
+                     "given to, then its stepper audited as tableau::<name>; with no --stepper only the tableaus "
+                     "are audited. A file that cannot be read is a row of the report; the others go on");
   std::vector<std::string> driver_patterns;
   app.add_option("--driver", driver_patterns,
                  "adaptive drivers to audit against their tolerances (1e-3 .. 1e-12), as shell "
@@ -152,16 +210,19 @@ int main(int argc, char** argv) {
               << "\n";
     return 1;
   }
+  if (!list && output.empty()) {
+    std::cerr << "mechcheck-audit: say where the report goes: -o DIR (it is created; the JSON, Markdown and SVG "
+                 "files are written there)\n";
+    return 1;
+  }
   problems = expanded(problems);
   long_run_problems = expanded(long_run_problems);
 
   const auto start = clock_type::now();
-  const auto elapsed = [&] {
-    return std::chrono::duration<double>(clock_type::now() - start).count();
-  };
-  const auto progress = [&](const std::string& what) {
-    std::fprintf(stderr, "[%7.1f s] %s\n", elapsed(), what.c_str());
-  };
+  const auto elapsed = [&] { return std::chrono::duration<double>(clock_type::now() - start).count(); };
+  const auto progress = [&](const std::string& what) { std::fprintf(stderr, "[%7.1f s] %s\n", elapsed(), what.c_str()); };
+  int status = 0;  // the largest of 1 (an input refused), 2 (a required claim contradicted), 3 (a child failed)
+  const auto raise = [&status](int s) { status = std::max(status, s); };
   // Writes a report by `write` and names its files; false (with the reason) on failure.
   const auto report_files = [&](const auto& write) {
     try {
@@ -175,6 +236,8 @@ int main(int argc, char** argv) {
       return false;
     }
   };
+
+  // The inputs: tableau files (a file that cannot be read is a row of the report), a child.
   audit_tool::request request;
   request.patterns = steppers;
   std::vector<audit::tableau_analysis> analyses;
@@ -184,65 +247,134 @@ int main(int argc, char** argv) {
       analyses.push_back(audit::analyse(request.tableaus.back()));
     } catch (const error& e) {
       std::cerr << "mechcheck-audit: " << e.what() << "\n";
-      return 1;
+      analyses.push_back(audit::failed_tableau(file, e.what()));
+      raise(1);
     }
     if (!list) std::cout << audit::describe(analyses.back()) << "\n";
   }
   if (!tableau_files.empty()) request.patterns.push_back("tableau::*");  // alone: only them
   std::vector<audit::exec_target> exec_targets;
   std::vector<audit::exec_driver_target> exec_drivers;
+  std::vector<audit::exec_engine_target> exec_engines;
   audit::exec_options eo;
   eo.timeout = exec_timeout;
-  if (exec_driver) {
+  bool child_refused = false;
+  if (!child_command.empty()) {
     try {
-      exec_drivers.push_back(audit::exec_driver(child_command, eo));
+      if (exec_driver) exec_drivers.push_back(audit::exec_driver(child_command, eo));
+      if (exec_stepper) exec_targets.push_back(audit::exec_stepper(child_command, eo));
+      if (exec_engine) exec_engines.push_back(audit::exec_engine(child_command, eo));
     } catch (const error& e) {
       std::cerr << "mechcheck-audit: " << e.what() << "\n";
-      return 1;
+      child_refused = true;
+      raise(1);
     }
-    driver_patterns.push_back("exec::*");
-  }
-  if (exec_stepper) {
-    try {
-      exec_targets.push_back(audit::exec_stepper(child_command, eo));
-    } catch (const error& e) {
-      std::cerr << "mechcheck-audit: " << e.what() << "\n";
-      return 1;
-    }
-    request.exec_steppers.push_back(exec_targets.back().box);
-    request.patterns.push_back("exec::*");  // alone: only the child's
-    if (std::find(tiers.begin(), tiers.end(), "double") == tiers.end()) {
+    // Alone, only the child's.
+    if (exec_driver) driver_patterns.push_back("exec::*");
+    if (exec_stepper) request.patterns.push_back("exec::*");
+    if (exec_engine && engine_patterns.empty()) engine_patterns.push_back("exec::*");
+    if (exec_stepper && std::find(tiers.begin(), tiers.end(), "double") == tiers.end()) {
       std::cerr << "mechcheck-audit: --exec-stepper runs in double; -t mpfr50 alone has nothing to run\n";
       return 1;
     }
   }
-  int status = 0;  // 2: a required claim contradicted; 3: a child failed
-  std::vector<audit::exec_engine_target> exec_engines;
-  if (exec_engine) {
-    try {
-      exec_engines.push_back(audit::exec_engine(child_command, eo));
-    } catch (const error& e) {
-      std::cerr << "mechcheck-audit: " << e.what() << "\n";
-      return 1;
+  for (const auto& t : exec_targets) request.exec_steppers.push_back(t.box);
+
+  // What this build can audit.
+  std::vector<audit::engine_integrator> all_engines = audit::engines_found();
+  for (const auto& t : exec_engines) all_engines.insert(all_engines.end(), t.integrators.begin(), t.integrators.end());
+  std::vector<audit::adaptive_driver> all_drivers = audit::drivers_found();
+  for (const auto& t : exec_drivers) all_drivers.push_back(t.driver);
+  const auto names_of = [](const auto& items) {
+    std::vector<std::string> out;
+    for (const auto& i : items) out.push_back(i.name);
+    return out;
+  };
+  request.newton_tolerance = newton_tolerance;
+  // The steppers' names in each tier (the families list them without auditing).
+  const auto stepper_names = [&](const std::vector<std::string>& patterns) {
+    audit_tool::request r = request;
+    r.patterns = patterns;
+    r.list_only = true;
+    std::map<std::string, std::vector<std::string>> tiers_of;  // name -> tiers
+    std::vector<std::string> order;
+    for (const auto& tier : tiers) {
+      std::vector<audit_tool::family_result> families;
+      if (tier == "double") {
+        families = {audit_tool::tableau_double(r), audit_tool::exec_double(r), audit_tool::builtin_double(r),
+                    audit_tool::odeint_double(r)};
+#ifdef MECHCHECK_HAVE_GSL
+        families.push_back(audit_tool::gsl_double(r));
+#endif
+#ifdef MECHCHECK_HAVE_ARKODE
+        families.push_back(audit_tool::arkode_double(r));
+#endif
+      } else {
+        families = {audit_tool::tableau_mpfr50(r), audit_tool::builtin_mpfr50(r), audit_tool::odeint_mpfr50(r)};
+#ifdef MECHCHECK_HAVE_ARKODE
+        families.push_back(audit_tool::arkode_mpfr50(r));
+#endif
+      }
+      for (const auto& f : families)
+        for (const auto& n : f.names) {
+          if (!tiers_of.count(n)) order.push_back(n);
+          tiers_of[n].push_back(tier);
+        }
     }
-    if (engine_patterns.empty()) engine_patterns.push_back("exec::*");  // alone: only the child's
+    std::vector<std::pair<std::string, std::vector<std::string>>> out;
+    for (const auto& n : order) out.emplace_back(n, tiers_of[n]);
+    return out;
+  };
+
+  if (list) {
+    // Every kind, each filtered by its own patterns (none: all of it).
+    const auto steppers_listed = stepper_names(request.patterns);
+    std::cout << "steppers (" << steppers_listed.size() << "; -s, --tableau, --exec-stepper):\n";
+    for (const auto& [n, ts] : steppers_listed) {
+      std::string t;
+      for (const auto& x : ts) t += (t.empty() ? "" : ", ") + x;
+      std::cout << "  " << n << " [" << t << "]\n";
+    }
+    std::vector<std::string> d = names_of(all_drivers), e = names_of(all_engines);
+    std::erase_if(d, [&](const std::string& n) { return !audit_tool::matches(driver_patterns, n); });
+    std::erase_if(e, [&](const std::string& n) { return !audit_tool::matches(engine_patterns, n); });
+    std::cout << "adaptive drivers (" << d.size() << "; --driver, --exec-driver; double):\n";
+    for (const auto& n : d) std::cout << "  " << n << "\n";
+    std::cout << "engine integrators (" << e.size() << "; --engine, --exec-engine; double):\n";
+    for (const auto& n : e) std::cout << "  " << n << "\n";
+    std::cout << "engine scenarios (" << scenario_names.size() << "; --scenario):\n";
+    for (const auto& n : scenario_names) std::cout << "  " << n << "\n";
+    const auto p = expanded(known_problems());
+    std::cout << "problems (" << p.size() << "; -p, --long-run-problem):\n";
+    for (const auto& n : p) std::cout << "  " << n << "\n";
+    return status;
   }
-  if (!engine_patterns.empty()) {
-    std::vector<audit::engine_integrator> engines = audit::engines_found();
-    for (const auto& t : exec_engines) engines.insert(engines.end(), t.integrators.begin(), t.integrators.end());
-    std::erase_if(engines, [&](const audit::engine_integrator& e) {
-      return !audit_tool::matches(engine_patterns, e.name);
-    });
-    if (engines.empty()) {
-      std::cerr << "mechcheck-audit: no engine integrator matches the --engine patterns given\n";
-      return 1;
+
+  // Every pattern names something (a misspelt name is an error listing what there is).
+  {
+    std::vector<std::string> all_steppers;
+    for (const auto& [n, ts] : stepper_names({})) all_steppers.push_back(n);
+    bool ok = every_pattern_matches("--stepper", "stepper", steppers, all_steppers);
+    if (!child_refused) {
+      ok = every_pattern_matches("--driver", "adaptive driver", driver_patterns, names_of(all_drivers)) && ok;
+      ok = every_pattern_matches("--engine", "engine integrator", engine_patterns, names_of(all_engines)) && ok;
     }
+    std::vector<std::string> everything = all_steppers;
+    for (const auto& n : names_of(all_engines)) everything.push_back(n);
+    if (!child_refused) ok = every_pattern_matches("--require", "stepper or engine integrator", require, everything) && ok;
+    if (!ok) return 1;
+  }
+  if (child_refused && steppers.empty() && tableau_files.empty() &&
+      std::all_of(driver_patterns.begin(), driver_patterns.end(), [](const std::string& p) { return p == "exec::*"; }) &&
+      std::all_of(engine_patterns.begin(), engine_patterns.end(), [](const std::string& p) { return p == "exec::*"; }))
+    return status;  // the child was all there was to audit
+
+  // The engines.
+  if (!engine_patterns.empty()) {
+    std::vector<audit::engine_integrator> engines = all_engines;
+    std::erase_if(engines, [&](const audit::engine_integrator& e) { return !audit_tool::matches(engine_patterns, e.name); });
     std::vector<audit::engine_audit> engine_audits;
     for (const auto& e : engines) {
-      if (list) {
-        std::cout << e.name << " [engine, double]\n";
-        continue;
-      }
       audit::engine_options eopt;
       eopt.scenarios = engine_scenarios;
       eopt.long_run_steps = engine_long_run_steps;
@@ -250,53 +382,41 @@ int main(int argc, char** argv) {
       if (!quiet) eopt.progress = progress;
       engine_audits.push_back(audit::audit_engine(e, eopt));
     }
-    if (!list) {
-      // The inertia of the shapes of every engine one of whose integrators was asked for.
-      std::vector<audit::shape_audit> shape_audits;
-      std::vector<audit::engine_shapes> shape_engines = audit::shapes_found();
-      for (const auto& t : exec_engines)
-        if (t.shapes) shape_engines.push_back(*t.shapes);
-      for (const auto& engine : shape_engines)
-        if (std::any_of(engines.begin(), engines.end(),
-                        [&](const audit::engine_integrator& e) { return e.name.rfind(engine.engine + "::", 0) == 0; }))
-          for (auto& a : audit::audit_shapes(engine)) shape_audits.push_back(std::move(a));
-      audit::print_engines(std::cout, engine_audits, shape_audits);
-      if (!report_files([&] { return audit::write_engine_report(output, engine_audits, shape_audits); })) return 1;
-      std::cout << "audited " << engine_audits.size() << " engine integrators in "
-                << static_cast<long>(elapsed() + 0.5) << " s\n";
-    }
+    // The inertia of the shapes of every engine one of whose integrators was asked for.
+    std::vector<audit::shape_audit> shape_audits;
+    std::vector<audit::engine_shapes> shape_engines = audit::shapes_found();
+    for (const auto& t : exec_engines)
+      if (t.shapes) shape_engines.push_back(*t.shapes);
+    for (const auto& engine : shape_engines)
+      if (std::any_of(engines.begin(), engines.end(),
+                      [&](const audit::engine_integrator& e) { return e.name.rfind(engine.engine + "::", 0) == 0; }))
+        for (auto& a : audit::audit_shapes(engine)) shape_audits.push_back(std::move(a));
+    audit::print_engines(std::cout, engine_audits, shape_audits);
+    if (!report_files([&] { return audit::write_engine_report(output, engine_audits, shape_audits); })) return 1;
+    std::cout << "audited " << engine_audits.size() << " engine integrators in " << static_cast<long>(elapsed() + 0.5)
+              << " s\n";
     for (const auto& a : engine_audits)
       if (!a.claims_hold() && audit_tool::matches_any(require, a.integrator)) {
         std::cerr << "mechcheck-audit: " << a.integrator << ": a declared claim is contradicted (see the table)\n";
-        status = 2;
+        raise(2);
       }
-    for (const auto& t : exec_engines)
-      if (t.failures() > 0) {
-        std::cerr << "mechcheck-audit: " << audit::command_text(child_command) << ": " << t.failures()
-                  << " children failed; the last: " << t.last_failure() << "\n";
-        return 3;
-      }
-    if (steppers.empty() && tableau_files.empty() && driver_patterns.empty()) return status;
-  }
-  const bool drivers_only = !driver_patterns.empty() && steppers.empty() && tableau_files.empty();
-
-  // The adaptive drivers (double).
-  std::vector<audit::adaptive_driver> drivers;
-  if (!driver_patterns.empty()) {
-    drivers = audit::drivers_found();
-    std::erase_if(drivers, [&](const audit::adaptive_driver& d) {
-      return !audit_tool::matches(driver_patterns, d.name);
-    });
-    for (const auto& t : exec_drivers) drivers.push_back(t.driver);
-    if (drivers.empty()) {
-      std::cerr << "mechcheck-audit: no driver matches the --driver patterns given\n";
-      return 1;
+    if (steppers.empty() && tableau_files.empty() && driver_patterns.empty() && exec_targets.empty()) {
+      for (const auto& t : exec_engines)
+        if (t.failures() > 0) {
+          std::cerr << "mechcheck-audit: " << audit::command_text(child_command) << ": " << t.failures()
+                    << " children failed; the last: " << t.last_failure() << "\n";
+          raise(3);
+        }
+      return status;
     }
   }
+
+  // The adaptive drivers (double).
+  const bool drivers_only = !driver_patterns.empty() && steppers.empty() && tableau_files.empty() && exec_targets.empty();
   std::vector<audit::driver_audit> driver_audits;
-  if (list) {
-    for (const auto& d : drivers) std::cout << d.name << " [driver, double]\n";
-  } else if (!drivers.empty()) {
+  if (!driver_patterns.empty()) {
+    std::vector<audit::adaptive_driver> drivers = all_drivers;
+    std::erase_if(drivers, [&](const audit::adaptive_driver& d) { return !audit_tool::matches(driver_patterns, d.name); });
     const double t0 = elapsed();
     audit::driver_options dopt;
     dopt.problems = problems;
@@ -306,30 +426,41 @@ int main(int argc, char** argv) {
     audit::print_drivers(std::cout, driver_audits);
     if (!quiet) std::fprintf(stderr, "[%7.1f s] drivers done in %.1f s\n", elapsed(), elapsed() - t0);
   }
-  if (drivers_only) {
-    if (list) return 0;
-    const std::string plot_problem = long_run_problems.empty() ? "kepler_e0.5" : long_run_problems.front();
-    if (!report_files([&] { return audit::write_driver_report(output, driver_audits, plot_problem, timing); }))
-      return 1;
-    std::cout << "audited " << driver_audits.size() << " drivers in " << static_cast<long>(elapsed() + 0.5) << " s\n";
+  const auto child_failures = [&] {
     for (const auto& t : exec_drivers)
       if (t.failures() > 0) {
         std::cerr << "mechcheck-audit: " << t.driver.name << ": " << t.failures() << " children failed; the last: "
                   << t.last_failure() << "\n";
-        return 3;
+        raise(3);
       }
-    return 0;
+    for (const auto& t : exec_targets)
+      if (t.failures() > 0) {
+        std::cerr << "mechcheck-audit: " << t.box.name << ": " << t.failures() << " children failed; the last: "
+                  << t.last_failure() << "\n";
+        raise(3);
+      }
+    for (const auto& t : exec_engines)
+      if (t.failures() > 0) {
+        std::cerr << "mechcheck-audit: " << audit::command_text(child_command) << ": " << t.failures()
+                  << " children failed; the last: " << t.last_failure() << "\n";
+        raise(3);
+      }
+  };
+  if (drivers_only) {
+    const std::string plot_problem = long_run_problems.empty() ? "kepler_e0.5" : long_run_problems.front();
+    if (!report_files([&] { return audit::write_driver_report(output, driver_audits, plot_problem, timing); }))
+      return 1;
+    std::cout << "audited " << driver_audits.size() << " drivers in " << static_cast<long>(elapsed() + 0.5) << " s\n";
+    child_failures();
+    return status;
   }
-  request.list_only = list;
-  request.newton_tolerance = newton_tolerance;
+
+  // The steppers, tier by tier.
   request.options.problems = problems;
   request.options.long_run_problems = long_run_problems;
-  request.options.long_run_steps = long_run_steps;
   request.options.timing = timing;
   if (!quiet) request.options.progress = progress;
-
   std::vector<audit::stepper_audit> audits;
-  std::vector<std::string> names;
   for (const auto& tier : tiers) {
     const double t0 = elapsed();
     request.options.long_run_steps = tier == "double" ? long_run_steps : long_run_steps_mpfr50;
@@ -353,28 +484,16 @@ int main(int argc, char** argv) {
       families.push_back(audit_tool::arkode_mpfr50(request));
 #endif
     }
-    for (const auto& f : families) {
-      for (const auto& n : f.names) names.push_back(n + " [" + tier + "]");
-      audits.insert(audits.end(), f.audits.begin(), f.audits.end());
-    }
-    if (!quiet && !list)
-      std::fprintf(stderr, "[%7.1f s] %s done in %.1f s\n", elapsed(), tier.c_str(),
-                   elapsed() - t0);
-  }
-  if (names.empty()) {
-    std::cerr << "mechcheck-audit: no stepper matches the patterns given (--list names them)\n";
-    return 1;
-  }
-  if (list) {
-    for (const auto& n : names) std::cout << n << "\n";
-    return 0;
+    for (const auto& f : families) audits.insert(audits.end(), f.audits.begin(), f.audits.end());
+    if (!quiet) std::fprintf(stderr, "[%7.1f s] %s done in %.1f s\n", elapsed(), tier.c_str(), elapsed() - t0);
   }
   audit::report_options report;
   report.timing = timing;
   if (!long_run_problems.empty()) report.long_run_problem = long_run_problems.front();
-  audit::print_table(std::cout, audits, report);
+  if (!audits.empty()) audit::print_table(std::cout, audits, report);
   const bool wrote = report_files([&] {
-    auto written = audit::write_report(output, audits, report);
+    std::vector<std::string> written;
+    if (!audits.empty()) written = audit::write_report(output, audits, report);
     if (!driver_audits.empty())
       for (const auto& w : audit::write_driver_report(output, driver_audits, report.long_run_problem, timing))
         written.push_back(w);
@@ -383,23 +502,14 @@ int main(int argc, char** argv) {
     return written;
   });
   if (!wrote) return 1;
-  std::cout << "audited " << audits.size() << " stepper-tier pairs in "
-            << static_cast<long>(elapsed() + 0.5) << " s\n";
+  std::cout << "audited " << audits.size() << " stepper-tier pairs in " << static_cast<long>(elapsed() + 0.5) << " s\n";
   for (const auto& a : audits)
-    for (const auto& pattern : require)
-      if (!a.claims_hold() && audit_tool::matches({pattern}, a.stepper)) {
-        std::cerr << "mechcheck-audit: " << a.stepper << " [" << a.tier
-                  << "]: a declared claim is contradicted (see the table)\n";
-        status = 2;
-        break;
-      }
-  // A child that failed (crashed, hung, broke the protocol): its runs are failed runs of
-  // the report, and the command says so by its status.
-  for (const auto& t : exec_targets)
-    if (t.failures() > 0) {
-      std::cerr << "mechcheck-audit: " << t.box.name << ": " << t.failures() << " children failed; the last: "
-                << t.last_failure() << "\n";
-      status = 3;
+    if (!a.claims_hold() && audit_tool::matches_any(require, a.stepper)) {
+      std::cerr << "mechcheck-audit: " << a.stepper << " [" << a.tier << "]: a declared claim is contradicted (see the table)\n";
+      raise(2);
     }
+  // A child that failed (crashed, hung, broke the protocol): its runs are failed runs of the
+  // report, and the command says so by its status.
+  child_failures();
   return status;
 }

@@ -5,8 +5,10 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "mechcheck/audit/audit.hpp"
+#include "mechcheck/audit/tableau_file.hpp"
 #include "mechcheck/integrators/runge_kutta.hpp"
 
 namespace mechcheck::audit {
@@ -31,6 +33,32 @@ stepper_under_audit<T> tableau_stepper(std::string name, const butcher_tableau<R
     return [m](state<ad<T>>& x, const ad<T>& h) { (*m)(x, h); };
   };
   return s;
+}
+
+/// The steppers of a tableau file (tableau_file.hpp), as `mechcheck-audit --tableau` audits
+/// them: tableau::<name> declaring the file's order, symplecticity and symmetry, and, for a
+/// file with `bhat`, tableau::<name>/embedding declaring its embedding_order (audit both and
+/// pass the pair to apply_embedded_reading); each carries what its order conditions give at
+/// the precision the coefficients are given to (add_algebraic_claims).
+template <class T>
+std::vector<stepper_under_audit<T>> tableau_file_steppers(const tableau_file& f) {
+  std::vector<stepper_under_audit<T>> out;
+  for (const bool embedding : {false, true}) {
+    if (embedding && f.bhat.empty()) continue;
+    butcher_tableau<mpfr100> t = f.tableau;
+    if (embedding) t.b = f.bhat;
+    claims c;
+    c.order = embedding ? f.embedding_order : f.order;
+    if (!embedding) {
+      c.symplectic = f.symplectic;
+      c.symmetric = f.symmetric;
+    }
+    add_algebraic_claims(c, order_conditions(t, 10, f.precision), f.precision_words);
+    out.push_back(tableau_stepper<T>("tableau::" + f.name + (embedding ? "/embedding" : ""), t, c,
+                                     f.path + (f.source.empty() ? "" : " (" + f.source + ")") +
+                                         (embedding ? ", its embedding bhat" : "")));
+  }
+  return out;
 }
 
 }  // namespace mechcheck::audit

@@ -334,7 +334,16 @@ std::string row_sum_words(const order_condition_report<mpfr100>& r) {
 }
 }  // namespace
 
+tableau_analysis failed_tableau(const std::string& path, const std::string& message) {
+  tableau_analysis a;
+  a.path = path;
+  a.name = std::filesystem::path(path).stem().string();
+  a.failure = message.empty() ? "failed" : message;
+  return a;
+}
+
 std::string describe(const tableau_analysis& a) {
+  if (!a.failure.empty()) return "tableau " + a.path + ": FAILED: " + a.failure + "\n";
   std::ostringstream os;
   const auto& trees = rooted_trees(a.method.max_order);
   os << "tableau " << a.name << " (" << a.path << "): " << a.stages << " stages, " << a.kind
@@ -369,6 +378,7 @@ std::string describe(const tableau_analysis& a) {
 }
 
 std::string to_json(const tableau_analysis& a) {
+  if (!a.failure.empty()) return json{{"name", a.name}, {"file", a.path}, {"failure", a.failure}}.dump(1) + "\n";
   const auto report = [](const order_condition_report<mpfr100>& r) {
     return json{{"residual_by_order", r.residual},
                 {"order_at_precision_given", r.order(r.tolerance)},
@@ -399,6 +409,13 @@ std::string to_markdown(const tableau_analysis& a) {
     return std::string(" (declared ") + v->declared + ": " + outcome_text(v->result) + ")";
   };
   std::ostringstream md;
+  if (!a.failure.empty()) {
+    std::string why = a.failure;
+    for (char& c : why)
+      if (c == '|' || c == '\n') c = ' ';
+    md << "| " << a.name << " | - | FAILED: " << why << " | | | | | | |\n";
+    return md.str();
+  }
   md << "| " << a.name << " | " << a.stages << " | " << a.kind << " | " << a.precision_words << " | "
      << order_phrase(a.method) << claim("order") << " | "
      << (a.embedding ? order_phrase(*a.embedding) + claim("embedding order") : std::string("-")) << " | "

@@ -105,6 +105,9 @@ enum class order_agreement {
 
 struct tableau_analysis {
   std::string name, path;
+  /// Non-empty: the file could not be read (the tableau_error's message); nothing else is set.
+  /// A batch of files reports such a file in its row and goes on with the others.
+  std::string failure;
   int stages = 0;
   std::string kind;  ///< "explicit", "diagonally implicit", "implicit"
   std::string precision_words;  ///< the precision the coefficients are given to
@@ -136,6 +139,9 @@ std::string order_phrase(const order_condition_report<mpfr100>& r);
 /// The claims a stepper of the tableau carries beside its declared ones: the coefficients'
 /// precision, and the order its conditions give with their words.
 void add_algebraic_claims(claims& c, const order_condition_report<mpfr100>& r, const std::string& precision_words);
+
+/// A file that could not be read, as a row of the report.
+tableau_analysis failed_tableau(const std::string& path, const std::string& message);
 
 /// The analysis as text (for the command), JSON and Markdown.
 std::string describe(const tableau_analysis& a);

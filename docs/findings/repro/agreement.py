@@ -42,12 +42,20 @@ def engine_scenario(integrator, scenario, report="engines/engines.json"):
     raise KeyError(f"engines.json: {integrator} has no scenario {scenario}")
 
 
-def class_fit(integrator, scenario, name):
-    return engine_scenario(integrator, scenario)["classes"][name]["fit"]["value"]
+def class_fit(integrator, scenario, name, report="engines/engines.json"):
+    return engine_scenario(integrator, scenario, report)["classes"][name]["fit"]["value"]
 
 
-def shape_error(engine_name, shape):
-    for s in load("engines/engines.json")["shapes"]:
+def class_error(integrator, scenario, name, h, report):
+    """The error of a class's study at step h."""
+    for p in engine_scenario(integrator, scenario, report)["classes"][name]["points"]:
+        if p["h"] == h:
+            return p["error"]
+    raise KeyError(f"{report}: {integrator} on {scenario} has no {name} point at h = {h}")
+
+
+def shape_error(engine_name, shape, report="engines/engines.json"):
+    for s in load(report)["shapes"]:
         if s["engine"] == engine_name and s["shape"] == shape:
             return s["relative_error"]
     raise KeyError(f"engines.json: no shape {engine_name} {shape}")
@@ -84,7 +92,8 @@ def largest_axis_error(program, shape):
 # Orders: both fit log2 of error ratios in the asymptotic range; 0.05 is half the band a
 # decisive fit may spread. Inertias: the same library function, printed to 6 digits: 1e-5.
 # Errors and ratios of identical setups: the same arithmetic up to summation order, 1e-3
-# relative; the stall of CASH: 5 % (the audit's runs go to 2^16 steps, the reproducer's to
+# relative (cannon-es's free top, read through the same quaternion and a reference good to
+# 1e-13 against the audit's Jacobi elliptic one: 1e-6); the stall of CASH: 5 % (the audit's runs go to 2^16 steps, the reproducer's to
 # 2^14, both on the plateau at 4.9e-11).
 CHECKS = [
     ("mujoco-rk4", "RK4's order in the orientation (free symmetric top)",
@@ -93,6 +102,25 @@ CHECKS = [
     ("mujoco-rk4", "the dexp-corrected RK4's order in the orientation",
      lambda: repro("mujoco_rk4_orientation", "rk4_dexp_corrected_axis_order"),
      lambda: class_fit("mujoco::RK4/dexp_corrected", "free_symmetric_top", "orientation"), 0.05, False),
+    ("mujoco-rk4", "MuJoCo 3.14.0 (WebAssembly): RK4's order in the orientation",
+     lambda: repro("mujoco_wasm_rk4_orientation", "rk4_axis_order"),
+     lambda: class_fit("exec::mujoco_wasm::RK4", "free_symmetric_top", "orientation", "engines-wasm/engines.json"),
+     0.05, False),
+    ("mujoco-rk4", "MuJoCo 3.14.0 (WebAssembly): the dexp-corrected RK4's order in the orientation",
+     lambda: repro("mujoco_wasm_rk4_orientation", "rk4_dexp_corrected_axis_order"),
+     lambda: class_fit("exec::mujoco_wasm::RK4/dexp_corrected", "free_symmetric_top", "orientation",
+                       "engines-wasm/engines.json"), 0.05, False),
+    ("cannon-free-body", "the free top's angular momentum, largest relative change over 10^4 steps",
+     lambda: repro("cannon_free_body", "free_top_momentum_max"),
+     lambda: engine_scenario("exec::cannon_es::World.step", "free_top", "engines-cannon/engines.json")["momentum_max"],
+     1e-6, True),
+    ("cannon-free-body", "the free top's body angular velocity error at t = 5, 16384 steps",
+     lambda: repro("cannon_free_body", "free_top_error_n16384"),
+     lambda: class_error("exec::cannon_es::World.step", "free_top", "angular velocity", 5 / 16384,
+                         "engines-cannon/engines.json"), 1e-6, True),
+    ("cannon-free-body", "a sphere's moment of inertia: relative error",
+     lambda: repro("cannon_free_body", "sphere_over_exact") - 1,
+     lambda: shape_error("exec::cannon_es", "sphere", "engines-cannon/engines.json"), 1e-5, True),
     ("simbody-feldberg", "RungeKuttaFeldberg's global order (pendulum)",
      lambda: repro("simbody_orders", "RungeKuttaFeldberg_global_order"),
      lambda: class_fit("simbody::RungeKuttaFeldberg", "pendulum_small", "joint coordinates"), 0.05, False),

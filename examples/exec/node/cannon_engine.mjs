@@ -2,7 +2,7 @@
 // cannon-es (npm), a rigid-body engine in JavaScript, served to mechcheck's audit as an
 // engine (docs/protocol.md): World.step(h) at a fixed step, on every scenario it can express.
 //
-//   mechcheck-audit --exec-engine -- node examples/exec/node/cannon_engine.mjs
+//   mechcheck-audit -o report --exec-engine -- node examples/exec/node/cannon_engine.mjs
 //
 // The scenario's model: a Body of the scenario's mass with its principal moments set
 // directly (Body.inertia and invInertia, then updateInertiaWorld; no shapes, so nothing
@@ -203,11 +203,14 @@ function moments(shape) {
   if (shape.name === 'box') body.addShape(new CANNON.Box(v3(shape.size.map((x) => x / 2))));
   else if (shape.name === 'sphere') body.addShape(new CANNON.Sphere(a));
   else if (shape.name === 'cylinder') body.addShape(new CANNON.Cylinder(a, a, b, 32));
-  else if (shape.name === 'cone') body.addShape(new CANNON.Cylinder(0, a, b, 32));
   else if (shape.name === 'two_spheres') {
     body.addShape(new CANNON.Sphere(a), v3([b, 0, 0]));
     body.addShape(new CANNON.Sphere(a), v3([-b, 0, 0]));
-  } else throw new Refused(`cannon-es ${version} has no ${shape.name} shape`);
+  } else if (shape.name === 'cone')
+    // A Cylinder with radiusTop 0 is centred at its bounding box's centre, not at a cone's
+    // centre of mass: not the audit's cone.
+    throw new Refused(`cannon-es ${version} has no cone shape`);
+  else throw new Refused(`cannon-es ${version} has no ${shape.name} shape`);
   return arr(body.inertia);
 }
 

@@ -5,7 +5,7 @@
 // as a Runge-Kutta-Munthe-Kaas method: the control for RK4's orientation), on every scenario
 // the bindings can express.
 //
-//   mechcheck-audit --exec-engine -- node examples/exec/node/mujoco_engine.mjs
+//   mechcheck-audit -o report --exec-engine -- node examples/exec/node/mujoco_engine.mjs
 //
 // The scenario's model as MJCF (the same mapping as mechcheck's C++ adapter for Debian's
 // MuJoCo 2.2.2, audit/mechcheck/audit/adapters/mujoco.cpp): a body with <inertial>, a free,
