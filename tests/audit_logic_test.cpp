@@ -877,4 +877,33 @@ TEST(audit_report, the_json_report_reads_back_what_the_audit_holds) {
   }
 }
 
+/// The embedded reading holds only on a companion whose order is confirmed: one that could
+/// not be resolved (or was not measured) says nothing of the declared order.
+TEST(audit_verdicts, an_unresolved_embedded_companion_does_not_make_a_reading) {
+  const auto stepper_with = [](const char* name, outcome main_result, outcome companion_result) {
+    audit::stepper_audit main, companion;
+    main.stepper = name;
+    main.declared.order = 2;
+    main.declared.order_readings = {audit::order_reading::embedded};
+    audit::verdict v;
+    v.claim = "order";
+    v.declared = "2";
+    v.measured = "3.00";
+    v.result = main_result;
+    main.verdicts = {v};
+    companion.stepper = std::string(name) + "/embedding";
+    audit::verdict e = v;
+    e.measured = "2.00";
+    e.result = companion_result;
+    companion.verdicts = {e};
+    audit::apply_embedded_reading(main, companion);
+    return main.find("order")->result;
+  };
+  EXPECT_EQ(stepper_with("confirmed companion", outcome::exceeds, outcome::confirmed),
+            outcome::reading);
+  for (const auto unresolved : {outcome::not_resolvable, outcome::not_measured,
+                                outcome::to_precision_given, outcome::exceeds})
+    EXPECT_EQ(stepper_with("unresolved companion", outcome::exceeds, unresolved), outcome::exceeds);
+}
+
 }  // namespace audit_logic

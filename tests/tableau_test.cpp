@@ -312,6 +312,15 @@ TEST(tableau_file, claims_a_file_may_declare_are_judged_algebraically) {
   const auto r = audit::analyse(audit::read_tableau(file));
   EXPECT_EQ(r.find("symplectic")->result, outcome::contradicted);
   EXPECT_EQ(r.find("stage order")->result, outcome::confirmed);
+  // The implicit midpoint rule declared not symplectic nor symmetric: both hold, so the
+  // declaration is exceeded (not "confirmed"); explicit Euler declared so is confirmed.
+  const auto midpoint = audit::analyse(audit::parse_tableau(
+      R"({"A": [["1/2"]], "b": ["1"], "c": ["1/2"], "symplectic": false, "symmetric": false})", "midpoint"));
+  EXPECT_EQ(midpoint.find("symplectic")->result, outcome::exceeds);
+  EXPECT_EQ(midpoint.find("symmetric")->result, outcome::exceeds);
+  const auto euler =
+      audit::analyse(audit::parse_tableau(R"({"A": [["0"]], "b": ["1"], "c": ["0"], "symplectic": false})", "euler"));
+  EXPECT_EQ(euler.find("symplectic")->result, outcome::confirmed);
 }
 
 TEST(tableau_file, a_singular_implicit_block_is_accepted_and_its_stepper_runs) {

@@ -344,9 +344,10 @@ int main(int argc, char** argv) {
     for (const auto& n : e) std::cout << "  " << n << "\n";
     std::cout << "engine scenarios (" << scenario_names.size() << "; --scenario):\n";
     for (const auto& n : scenario_names) std::cout << "  " << n << "\n";
-    const auto p = expanded(known_problems());
-    std::cout << "problems (" << p.size() << "; -p, --long-run-problem):\n";
-    for (const auto& n : p) std::cout << "  " << n << "\n";
+    const auto p = known_problems();
+    std::cout << "problems (" << p.size() - 1 << "; -p, --long-run-problem):\n";
+    for (const auto& n : p)
+      std::cout << "  " << n << (n == "henon_heiles" ? " (both orbits: henon_heiles_regular and _chaotic)" : "") << "\n";
     return status;
   }
 

@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# The command's behaviour towards a newcomer (ctest: cli.command): names are checked and the
+# valid ones listed, the report goes where -o says, a batch goes on past a bad input and the
+# exit status says so, --list lists every kind, --help names the installed tableaus.
+# Usage: command_test.sh MECHCHECK_AUDIT SOURCE_DIR
+set -uo pipefail
+audit=$1
+source_dir=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failed=0
+# expect STATUS REGEX ARGS...: the command exits with STATUS and its output matches REGEX.
+expect() {
+  local status=$1 regex=$2
+  shift 2
+  local out got
+  out=$("$audit" "$@" 2>&1)
+  got=$?
+  if [ "$got" != "$status" ] || ! grep -Eq -- "$regex" <<< "$out"; then
+    echo "FAILED: mechcheck-audit $*"
+    echo "  expected status $status and /$regex/; got status $got and:"
+    sed 's/^/    /' <<< "$out" | tail -n 8
+    failed=1
+  else
+    echo "ok: mechcheck-audit $* (status $got)"
+  fi
+}
+
+# Names: a misspelt stepper, driver, engine, problem or scenario is an error naming what there is.
+expect 1 "'odient::\*' matches no stepper; this build has [0-9]+ of them, named mechcheck::\*, odeint::\*" \
+  -s 'odient::*' -o "$work/a"
+expect 1 "matches no adaptive driver.*odeint::\*" --driver 'gls::*' -o "$work/a"
+expect 1 "matches no engine integrator" --engine 'mujuco::*' -o "$work/a"
+expect 105 "free_tpo not in .*free_top" --engine '*' --scenario free_tpo -o "$work/a"
+expect 105 "kepler_e05 not in .*kepler_e0.5" -p kepler_e05 -o "$work/a"
+[ -e "$work/a" ] && { echo "FAILED: a refused command wrote $work/a"; failed=1; }
+# The report goes where -o says; without -o nothing is written anywhere.
+(cd "$work" && expect 1 "say where the report goes: -o DIR" -t double -s mechcheck::rk4 -p oscillator)
+[ -z "$(ls -A "$work")" ] || { echo "FAILED: a command without -o wrote into the current directory"; failed=1; }
+# A batch goes on: a bad tableau file among good ones is a row of the report, the others are
+# audited, and the status says that something failed.
+printf '{"A": [["0"]], "b": ["1"], "c": ["0"]}' > "$work/euler.json"
+printf '{"A": [["0", "0"]], "b": ["1"], "c": ["0"]}' > "$work/wrong.json"
+expect 1 "wrote .*tableaus.md" --tableau "$work/euler.json" --tableau "$work/wrong.json" \
+  --tableau "$work/missing.json" -t double -p oscillator --long-run-steps 0 -q -o "$work/batch"
+grep -q "| euler | 1 | explicit" "$work/batch/tableaus.md" && grep -q "| wrong | - | FAILED: .*A\[0\] has 2 entries" \
+  "$work/batch/tableaus.md" && grep -q "| missing | - | FAILED: .*cannot be read" "$work/batch/tableaus.md" &&
+  grep -q "tableau::euler" "$work/batch/audit.md" || { echo "FAILED: the batch's report lacks a row"; failed=1; }
+# --list names every kind; --help names the tableaus.
+for section in "steppers \([0-9]+;" "adaptive drivers \([0-9]+;" "engine integrators \([0-9]+;" \
+               "engine scenarios \(14;" "problems \([0-9]+;"; do
+  expect 0 "^$section" --list
+done
+expect 0 "The classical tableaus \(--tableau\): .*tableaus" --help
+exit $failed
