@@ -71,6 +71,27 @@ std::string tableau_directory() {
   return "share/mechcheck/tableaus under the installation prefix";
 }
 
+/// The stepper families of a tier, as the request asks (list_only: their names alone).
+std::vector<audit_tool::family_result> families_in(const std::string& tier, const audit_tool::request& r) {
+  std::vector<audit_tool::family_result> families;
+  if (tier == "double") {
+    families = {audit_tool::tableau_double(r), audit_tool::exec_double(r), audit_tool::builtin_double(r),
+                audit_tool::odeint_double(r)};
+#ifdef MECHCHECK_HAVE_GSL
+    families.push_back(audit_tool::gsl_double(r));
+#endif
+#ifdef MECHCHECK_HAVE_ARKODE
+    families.push_back(audit_tool::arkode_double(r));
+#endif
+  } else {
+    families = {audit_tool::tableau_mpfr50(r), audit_tool::builtin_mpfr50(r), audit_tool::odeint_mpfr50(r)};
+#ifdef MECHCHECK_HAVE_ARKODE
+    families.push_back(audit_tool::arkode_mpfr50(r));
+#endif
+  }
+  return families;
+}
+
 /// The families ("mechcheck::", "odeint::", ...) of a list of names, for messages.
 std::string families_of(const std::vector<std::string>& names) {
   std::vector<std::string> families;
@@ -299,23 +320,7 @@ int main(int argc, char** argv) {
     std::map<std::string, std::vector<std::string>> tiers_of;  // name -> tiers
     std::vector<std::string> order;
     for (const auto& tier : tiers) {
-      std::vector<audit_tool::family_result> families;
-      if (tier == "double") {
-        families = {audit_tool::tableau_double(r), audit_tool::exec_double(r), audit_tool::builtin_double(r),
-                    audit_tool::odeint_double(r)};
-#ifdef MECHCHECK_HAVE_GSL
-        families.push_back(audit_tool::gsl_double(r));
-#endif
-#ifdef MECHCHECK_HAVE_ARKODE
-        families.push_back(audit_tool::arkode_double(r));
-#endif
-      } else {
-        families = {audit_tool::tableau_mpfr50(r), audit_tool::builtin_mpfr50(r), audit_tool::odeint_mpfr50(r)};
-#ifdef MECHCHECK_HAVE_ARKODE
-        families.push_back(audit_tool::arkode_mpfr50(r));
-#endif
-      }
-      for (const auto& f : families)
+      for (const auto& f : families_in(tier, r))
         for (const auto& n : f.names) {
           if (!tiers_of.count(n)) order.push_back(n);
           tiers_of[n].push_back(tier);
@@ -465,27 +470,7 @@ int main(int argc, char** argv) {
   for (const auto& tier : tiers) {
     const double t0 = elapsed();
     request.options.long_run_steps = tier == "double" ? long_run_steps : long_run_steps_mpfr50;
-    std::vector<audit_tool::family_result> families;
-    if (tier == "double") {
-      families.push_back(audit_tool::tableau_double(request));
-      families.push_back(audit_tool::exec_double(request));
-      families.push_back(audit_tool::builtin_double(request));
-      families.push_back(audit_tool::odeint_double(request));
-#ifdef MECHCHECK_HAVE_GSL
-      families.push_back(audit_tool::gsl_double(request));
-#endif
-#ifdef MECHCHECK_HAVE_ARKODE
-      families.push_back(audit_tool::arkode_double(request));
-#endif
-    } else {
-      families.push_back(audit_tool::tableau_mpfr50(request));
-      families.push_back(audit_tool::builtin_mpfr50(request));
-      families.push_back(audit_tool::odeint_mpfr50(request));
-#ifdef MECHCHECK_HAVE_ARKODE
-      families.push_back(audit_tool::arkode_mpfr50(request));
-#endif
-    }
-    for (const auto& f : families) audits.insert(audits.end(), f.audits.begin(), f.audits.end());
+    for (const auto& f : families_in(tier, request)) audits.insert(audits.end(), f.audits.begin(), f.audits.end());
     if (!quiet) std::fprintf(stderr, "[%7.1f s] %s done in %.1f s\n", elapsed(), tier.c_str(), elapsed() - t0);
   }
   audit::report_options report;

@@ -330,7 +330,7 @@ std::string row_sum_words(const order_condition_report<mpfr100>& r) {
   if (r.row_sum <= r.tolerance) return "c = A 1 to " + sci(r.row_sum);
   return "c differs from A 1 by " + sci(r.row_sum) +
          ": the stepper never uses c on the audit's problems (all autonomous), a non-autonomous "
-         "system would see it";
+         "system would see it (write c_i = sum_j a_ij unless the method means otherwise)";
 }
 }  // namespace
 

@@ -16,23 +16,12 @@
 // rigid one (said to the audit as the run's model_differs). The engine declares no order.
 import * as CANNON from 'cannon-es';
 import { readFileSync } from 'node:fs';
-import { Refused, frame, serveEngine } from './protocol.mjs';
+import { Refused, frame, scenarioOf, serveEngine } from './protocol.mjs';
 
 const version = JSON.parse(readFileSync(new URL('./node_modules/cannon-es/package.json', import.meta.url))).version;
 
 const v3 = (a) => new CANNON.Vec3(a[0], a[1], a[2]);
 const arr = (v) => [v.x, v.y, v.z];
-
-/** Reads the scenario's numbers (decimal strings) into numbers, recursively. */
-function parsed(s) {
-  const out = {};
-  for (const [k, v] of Object.entries(s)) {
-    if (Array.isArray(v)) out[k] = v.map((x) => (typeof x === 'object' ? parsed(x) : Number(x)));
-    else if (v !== null && typeof v === 'object') out[k] = parsed(v);
-    else out[k] = k === 'name' || k === 'structure' || k === 'joint' ? v : Number(v);
-  }
-  return out;
-}
 
 /** R (row-major) times a vector. */
 const rotate = (r, x) => [0, 1, 2].map((i) => r[3 * i] * x[0] + r[3 * i + 1] * x[1] + r[3 * i + 2] * x[2]);
@@ -95,7 +84,7 @@ const soft =
 class Run {
   constructor(integrator, scenario) {
     if (integrator !== 'World.step') throw new Refused(`no integrator ${integrator}`);
-    const s = parsed(scenario);
+    const s = scenarioOf(scenario);
     this.s = s;
     const world = new CANNON.World();
     world.gravity.set(0, 0, -s.gravity);

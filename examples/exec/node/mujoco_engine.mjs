@@ -16,7 +16,7 @@
 // each step -- what a callback would give to a method that evaluates forces once a step
 // (Euler, implicit, implicitfast), not to RK4's four stages: refused there.
 import loadMujoco from '@mujoco/mujoco';
-import { Refused, frame, serveEngine } from './protocol.mjs';
+import { Refused, frame, scenarioOf, serveEngine } from './protocol.mjs';
 
 const mj = await loadMujoco();
 const version = mj.mj_versionString();
@@ -57,17 +57,6 @@ function mjcf(s, integrator) {
     xml += '</worldbody>';
   }
   return xml + '</mujoco>';
-}
-
-/** Reads the scenario's numbers (decimal strings) into numbers, recursively. */
-function parsed(s) {
-  const out = {};
-  for (const [k, v] of Object.entries(s)) {
-    if (Array.isArray(v)) out[k] = v.map((x) => (typeof x === 'object' ? parsed(x) : Number(x)));
-    else if (v !== null && typeof v === 'object') out[k] = parsed(v);
-    else out[k] = k === 'name' || k === 'structure' || k === 'joint' ? v : Number(v);
-  }
-  return out;
 }
 
 /** The classical RK4 on mj_forward with each stage's body-frame angular velocity through
@@ -132,7 +121,7 @@ function quaternion(rowMajor) {
 class Run {
   constructor(integrator, scenario) {
     this.name = `MuJoCo ${version} ${integrator}`;
-    const s = parsed(scenario);
+    const s = scenarioOf(scenario);
     this.s = s;
     this.dexp = integrator === 'RK4/dexp_corrected';
     const base = this.dexp ? 'RK4' : integrator;

@@ -27,9 +27,16 @@ export function frame(rotation, position, velocity, omega) {
   return f;
 }
 
-/** The scenario's numbers, read from the parent's decimal strings. */
-export function numbers(a) {
-  return a.map(Number);
+/** The scenario of a "start" with its numbers read (the parent writes them as decimal
+ * strings of 17 significant digits, which Number() reads exactly), recursively. */
+export function scenarioOf(s) {
+  const out = {};
+  for (const [k, v] of Object.entries(s)) {
+    if (Array.isArray(v)) out[k] = v.map((x) => (typeof x === 'object' ? scenarioOf(x) : Number(x)));
+    else if (v !== null && typeof v === 'object') out[k] = scenarioOf(v);
+    else out[k] = k === 'name' || k === 'structure' || k === 'joint' ? v : Number(v);
+  }
+  return out;
 }
 
 export async function serveEngine(hello, start, moments) {
