@@ -133,7 +133,9 @@ int main(int argc, char** argv) {
                "behaviour, first integrals and cost of one-step integrators, adaptive drivers and "
                "physics engines, against what they declare"};
   app.footer("Exit status: 0 all audited; 1 an input refused (the others are still audited and written); "
-             "2 a claim --require names is contradicted; 3 a child failed during the audit.\n"
+             "2 a claim --require names is contradicted (a stepper's or engine integrator's measured claim, or "
+             "a tableau file's algebraic one: order, embedding order, stage order, symplectic, symmetric); "
+             "3 a child failed during the audit.\n"
              "The classical tableaus (--tableau): " + tableau_directory());
   std::vector<std::string> steppers, problems, tiers = {"double", "mpfr50"};
   std::vector<std::string> long_run_problems = {"kepler_e0.5"};
@@ -169,7 +171,8 @@ int main(int argc, char** argv) {
                "integrators, engine scenarios, problems -- filtered by the patterns given, and exit");
   app.add_option("--require", require,
                  "exit with status 2 when a claim of a stepper or engine integrator matching this pattern is "
-                 "contradicted (e.g. 'mechcheck::*'; '*' for all)");
+                 "contradicted, a tableau file's algebraic claims included (tableau::<name>; e.g. 'mechcheck::*'; "
+                 "'*' for all)");
   app.add_flag("-q,--quiet", quiet, "no progress on stderr");
   double newton_tolerance = 0;
   app.add_option("--newton-tolerance", newton_tolerance,
@@ -494,6 +497,16 @@ int main(int argc, char** argv) {
       std::cerr << "mechcheck-audit: " << a.stepper << " [" << a.tier << "]: a declared claim is contradicted (see the table)\n";
       raise(2);
     }
+  // A tableau file's algebraic claims (the stage order is one no stepper carries).
+  for (const auto& a : analyses) {
+    if (!audit_tool::matches_any(require, "tableau::" + a.name)) continue;
+    for (const auto& v : a.verdicts)
+      if (v.result == audit::verdict::outcome::contradicted) {
+        std::cerr << "mechcheck-audit: tableau::" << a.name << " (" << a.path << "): " << v.claim << " declared "
+                  << v.declared << " is contradicted by its order conditions (see the analysis)\n";
+        raise(2);
+      }
+  }
   // A child that failed (crashed, hung, broke the protocol): its runs are failed runs of the
   // report, and the command says so by its status.
   child_failures();

@@ -60,6 +60,63 @@ enum class energy_behaviour {
   drift,    ///< a drift that grows with time (linear or faster)
 };
 
+/// One reading of a claim's words and what the measurement says under it.
+struct claim_reading {
+  std::string reading;   ///< e.g. "global order 3 of the propagated solution"
+  std::string measured;  ///< the measurement under this reading
+  bool holds = false;
+};
+
+/// A claim and its outcome.
+///   confirmed         the measurement agrees with the claim;
+///   contradicted      it disagrees under every reading the documentation's words allow,
+///                     above the study's resolution and on settled fits;
+///   not_resolvable    the study cannot decide (`needs` says what would: a tier, a smaller
+///                     floor, a longer horizon);
+///   reading           the words admit a reading the measurement confirms (`readings`
+///                     holds each reading with its measurement);
+///   exceeds           the method measures better than declared (a higher order, a
+///                     symplectic map declared not to be);
+///   to_precision_given the claim holds to the precision the coefficients are given to,
+///                     and fails only below it;
+///   not_declared      nothing declared (the measurement is reported);
+///   not_measured      no study could run (every problem skipped or failed).
+struct verdict {
+  enum class outcome {
+    confirmed,
+    contradicted,
+    not_declared,
+    not_measured,
+    not_resolvable,
+    reading,
+    exceeds,
+    to_precision_given
+  };
+  std::string claim;
+  std::string declared;
+  std::string measured;
+  std::string evidence;
+  outcome result = outcome::not_measured;
+  std::string needs;                   ///< not_resolvable: what the study would need
+  std::vector<claim_reading> readings;  ///< reading: every reading with its measurement
+};
+
+/// Words for an outcome: "confirmed", "CONTRADICTED", "not resolvable", "reading",
+/// "exceeds", "to the precision given", "not declared", "not measured".
+inline const char* outcome_text(verdict::outcome o) {
+  switch (o) {
+    case verdict::outcome::confirmed: return "confirmed";
+    case verdict::outcome::contradicted: return "CONTRADICTED";
+    case verdict::outcome::not_declared: return "not declared";
+    case verdict::outcome::not_measured: return "not measured";
+    case verdict::outcome::not_resolvable: return "not resolvable";
+    case verdict::outcome::reading: return "reading";
+    case verdict::outcome::exceeds: return "exceeds";
+    case verdict::outcome::to_precision_given: return "to the precision given";
+  }
+  return "?";
+}
+
 /// What a stepper declares; an empty optional is "not declared".
 struct claims {
   std::optional<int> order;
@@ -79,6 +136,16 @@ struct claims {
   /// exceeds the declared one; algebraic_order is the order they give.
   std::optional<int> algebraic_order;
   std::string algebraic_words;
+  /// What the algebra of the coefficients decides, claim by claim ("order", "symplectic",
+  /// "symmetric"; tableau_file.hpp's add_algebraic_claims), each a verdict of exact
+  /// arithmetic at the precision the coefficients are given to.
+  std::vector<verdict> algebraic;
+  /// The stepper *is* that tableau (mechcheck's Runge-Kutta stepper with these
+  /// coefficients): where the algebra decides a claim, its verdict stands and the
+  /// measurement is quoted beside it (with why it did not resolve the question where the
+  /// two differ). A library's own implementation of a table keeps its measured verdicts;
+  /// the algebra is quoted.
+  bool algebra_decides = false;
 };
 
 /// What a method needs of a problem. The audit runs a method only on the problems that
@@ -176,63 +243,6 @@ struct problem_audit {
   std::optional<double> reference_digits;
   double reference_uncertainty = 0;
 };
-
-/// One reading of a claim's words and what the measurement says under it.
-struct claim_reading {
-  std::string reading;   ///< e.g. "global order 3 of the propagated solution"
-  std::string measured;  ///< the measurement under this reading
-  bool holds = false;
-};
-
-/// A claim and its outcome.
-///   confirmed         the measurement agrees with the claim;
-///   contradicted      it disagrees under every reading the documentation's words allow,
-///                     above the study's resolution and on settled fits;
-///   not_resolvable    the study cannot decide (`needs` says what would: a tier, a smaller
-///                     floor, a longer horizon);
-///   reading           the words admit a reading the measurement confirms (`readings`
-///                     holds each reading with its measurement);
-///   exceeds           the method measures better than declared (a higher order, a
-///                     symplectic map declared not to be);
-///   to_precision_given the claim holds to the precision the coefficients are given to,
-///                     and fails only below it;
-///   not_declared      nothing declared (the measurement is reported);
-///   not_measured      no study could run (every problem skipped or failed).
-struct verdict {
-  enum class outcome {
-    confirmed,
-    contradicted,
-    not_declared,
-    not_measured,
-    not_resolvable,
-    reading,
-    exceeds,
-    to_precision_given
-  };
-  std::string claim;
-  std::string declared;
-  std::string measured;
-  std::string evidence;
-  outcome result = outcome::not_measured;
-  std::string needs;                   ///< not_resolvable: what the study would need
-  std::vector<claim_reading> readings;  ///< reading: every reading with its measurement
-};
-
-/// Words for an outcome: "confirmed", "CONTRADICTED", "not resolvable", "reading",
-/// "exceeds", "to the precision given", "not declared", "not measured".
-inline const char* outcome_text(verdict::outcome o) {
-  switch (o) {
-    case verdict::outcome::confirmed: return "confirmed";
-    case verdict::outcome::contradicted: return "CONTRADICTED";
-    case verdict::outcome::not_declared: return "not declared";
-    case verdict::outcome::not_measured: return "not measured";
-    case verdict::outcome::not_resolvable: return "not resolvable";
-    case verdict::outcome::reading: return "reading";
-    case verdict::outcome::exceeds: return "exceeds";
-    case verdict::outcome::to_precision_given: return "to the precision given";
-  }
-  return "?";
-}
 
 /// The audit of one stepper in one tier.
 struct stepper_audit {

@@ -24,6 +24,8 @@ stepper_under_audit<T> tableau_stepper(std::string name, const butcher_tableau<R
   s.name = std::move(name);
   s.origin = std::move(origin);
   s.declared = declared;
+  // The stepper is the tableau: what its algebra decides, it decides (verdicts.hpp).
+  s.declared.algebra_decides = !declared.algebraic.empty();
   s.make = [t](const erased_system<T>& system) -> step_function<T> {
     auto m = std::make_shared<runge_kutta<erased_system<T>, dynamic_vector<T>>>(system, *t);
     return [m](state<T>& x, const T& h) { (*m)(x, h); };
@@ -39,7 +41,8 @@ stepper_under_audit<T> tableau_stepper(std::string name, const butcher_tableau<R
 /// them: tableau::<name> declaring the file's order, symplecticity and symmetry, and, for a
 /// file with `bhat`, tableau::<name>/embedding declaring its embedding_order (audit both and
 /// pass the pair to apply_embedded_reading); each carries what its order conditions give at
-/// the precision the coefficients are given to (add_algebraic_claims).
+/// the precision the coefficients are given to (add_algebraic_claims), and where that
+/// algebra decides a claim its verdict stands beside the measurement.
 template <class T>
 std::vector<stepper_under_audit<T>> tableau_file_steppers(const tableau_file& f) {
   std::vector<stepper_under_audit<T>> out;
@@ -53,7 +56,7 @@ std::vector<stepper_under_audit<T>> tableau_file_steppers(const tableau_file& f)
       c.symplectic = f.symplectic;
       c.symmetric = f.symmetric;
     }
-    add_algebraic_claims(c, order_conditions(t, 10, f.precision), f.precision_words);
+    add_algebraic_claims(c, order_conditions(t, orders_to_evaluate(f), f.precision), f.precision_words);
     out.push_back(tableau_stepper<T>("tableau::" + f.name + (embedding ? "/embedding" : ""), t, c,
                                      f.path + (f.source.empty() ? "" : " (" + f.source + ")") +
                                          (embedding ? ", its embedding bhat" : "")));

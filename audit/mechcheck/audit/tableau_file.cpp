@@ -123,6 +123,15 @@ tableau_file parse_tableau(std::string_view text, const std::string& file) {
     fail(file, std::string("is not JSON: ") + e.what());
   }
   if (!doc.is_object()) fail(file, "is not a JSON object with A, b and c");
+  // A field the reader does not know is an error: a misspelt claim ("symplectc") would
+  // otherwise be dropped without a word, and a gate on it pass.
+  for (const auto& [key, value] : doc.items())
+    if (std::find(tableau_fields.begin(), tableau_fields.end(), key) == tableau_fields.end()) {
+      std::string known;
+      for (const auto& f : tableau_fields) known += (known.empty() ? "" : ", ") + std::string(f);
+      fail(file, "has the field \"" + key.substr(0, 80) + "\", which a tableau file does not have (its fields: " +
+                     known + ")");
+    }
   tableau_file t;
   t.path = file;
   const auto text_field = [&](const char* key, std::size_t limit) {
@@ -204,48 +213,70 @@ tableau_file parse_tableau(std::string_view text, const std::string& file) {
 }
 
 order_agreement agreement(const order_condition_report<mpfr100>& r, int p) {
-  const double worst = r.up_to(p);
-  if (worst <= r.exact_tolerance) return order_agreement::exact;
-  if (worst <= r.tolerance) return order_agreement::to_precision_given;
-  return order_agreement::contradicted;
-}
-
-std::string order_phrase(const order_condition_report<mpfr100>& r) {
-  // p: every condition within the precision given; loose: within 1e-8 (what a table right
-  // to a few digits less than its storage still reaches).
-  const int p = r.order(r.tolerance), loose = r.order(1e-8);
-  if (loose == 0) return "not consistent (sum b_i - 1 = " + sci(r.residual[0]) + ")";
-  if (loose > p)
-    return "order " + std::to_string(loose) + " to " + sci(r.up_to(loose)) + ", beyond the precision given (" +
-           sci(r.tolerance) + "): order " + std::to_string(p + 1) + " fails there by " +
-           sci(r.residual[std::size_t(p)]);
-  const double worst = r.up_to(p);
-  return "order " + std::to_string(p) +
-         (worst <= r.exact_tolerance ? " exactly" : " to " + sci(worst) + ", within the precision given") +
-         (p < r.max_order ? "; order " + std::to_string(p + 1) + " fails by " + sci(r.residual[std::size_t(p)])
-                          : "");
-}
-
-void add_algebraic_claims(claims& c, const order_condition_report<mpfr100>& r, const std::string& precision_words) {
-  c.algebraic_order = r.order(r.tolerance);
-  c.algebraic_words = order_phrase(r) + " (coefficients " + precision_words + ")";
-  if (r.precision > 0) {
-    c.coefficient_precision = r.precision;
-    c.coefficient_words = precision_words;
+  if (r.decides(p, r.exact_tolerance) > 0) return order_agreement::exact;
+  switch (r.decides(p, r.tolerance)) {
+    case 1: return order_agreement::to_precision_given;
+    case -1: return order_agreement::contradicted;
+    default: return order_agreement::not_evaluated;
   }
 }
 
 namespace {
+/// For a contradicted order of exact coefficients that hold it to many digits: how many,
+/// and the field that says so.
+std::string digits_held(const order_condition_report<mpfr100>& r, int p) {
+  const double worst = r.relative_up_to(p);
+  if (!(worst > 0) || worst >= 1e-3) return "";
+  const std::string digits = std::to_string(int(std::floor(-std::log10(worst))));
+  return "; its conditions up to order " + std::to_string(p) + " hold to " + sci(worst) + " relative, about " + digits +
+         " digits: coefficients that approximate a method to that many digits say so with \"precision\": " + digits;
+}
+}  // namespace
+
+namespace {
+/// How order p + 1 fails (p the order held at `below`), or why it is not decided.
+std::string next_order_words(const order_condition_report<mpfr100>& r, int p, double below) {
+  const std::string next = "order " + std::to_string(p + 1);
+  if (p < r.max_order)
+    return "; " + next + " fails by " + sci(r.residual[std::size_t(p)]) + " (relative " +
+           sci(r.relative[std::size_t(p)]) + ")";
+  if (r.bushy_failure(below) == p + 1)
+    return "; " + next + " fails by " + sci(r.b_relative[std::size_t(p)]) +
+           " relative in its bushy-tree condition b^T c^" + std::to_string(p) + " = 1/" + std::to_string(p + 1);
+  return "; " + next + " not evaluated (" + (r.limit.empty() ? "trees evaluated to order " + std::to_string(r.max_order) : r.limit) + ")";
+}
+}  // namespace
+
+std::string order_phrase(const order_condition_report<mpfr100>& r) {
+  // p: every condition within the precision given; loose: within 1e-8 relative (what a
+  // table right to a few digits less than its storage still reaches).
+  const int p = r.order(r.tolerance), loose = r.order(1e-8);
+  const std::string how = p > r.max_order ? " (trees to order " + std::to_string(r.max_order) +
+                                                ", then the simplifying assumptions B, C, D)"
+                                          : "";
+  if (loose == 0) return "not consistent (sum b_i - 1 = " + sci(r.residual[0]) + ")";
+  if (loose > p)
+    return "order " + std::to_string(loose) + " to " + sci(r.relative_up_to(loose)) +
+           " relative, beyond the precision given (" + sci(r.tolerance) + ")" + next_order_words(r, p, r.tolerance);
+  const double worst = r.relative_up_to(p);
+  return "order " + std::to_string(p) + how +
+         (worst <= r.exact_tolerance ? " exactly" : " to " + sci(worst) + " relative, within the precision given") +
+         next_order_words(r, p, r.tolerance);
+}
+
+
+namespace {
 /// An algebraic yes/no condition (symplectic, symmetric) with its residual.
 verdict condition_verdict(const char* claim, const std::optional<bool>& declared, double residual,
-                          const order_condition_report<mpfr100>& r, const std::string& words,
+                          double relative, const order_condition_report<mpfr100>& r, const std::string& words,
                           const char* condition) {
   verdict v;
   v.claim = claim;
   v.declared = declared ? (*declared ? "yes" : "no") : "-";
-  const bool exact = residual <= r.exact_tolerance, given = residual <= r.tolerance;
+  const bool exact = relative <= r.exact_tolerance, given = relative <= r.tolerance;
   v.measured = exact ? "yes, exactly" : given ? "yes, to the precision given" : "no";
-  v.evidence = std::string(condition) + " = " + sci(residual) + " (tolerance " + sci(r.tolerance) + ", " + words + ")";
+  v.evidence = std::string(condition) + " = " + sci(residual) + ", relative " + sci(relative) + " (tolerance " +
+               sci(r.tolerance) + ", " + words + ")";
   using outcome = verdict::outcome;
   if (!declared) v.result = outcome::not_declared;
   else if (*declared) v.result = exact ? outcome::confirmed : given ? outcome::to_precision_given : outcome::contradicted;
@@ -266,20 +297,46 @@ verdict order_verdict(const char* claim, const std::optional<int>& declared,
     v.result = outcome::not_declared;
     return v;
   }
+  const bool more = r.decides(*declared + 1, r.tolerance) > 0;
   switch (agreement(r, *declared)) {
-    case order_agreement::exact:
-      v.result = r.order(r.tolerance) > *declared ? outcome::exceeds : outcome::confirmed;
+    case order_agreement::exact: v.result = more ? outcome::exceeds : outcome::confirmed; break;
+    case order_agreement::to_precision_given: v.result = more ? outcome::exceeds : outcome::to_precision_given; break;
+    case order_agreement::not_evaluated:
+      v.result = outcome::not_resolvable;
+      v.needs = "the order conditions of order " + std::to_string(r.max_order + 1) + " to " +
+                std::to_string(*declared) + ": " + r.limit +
+                "; the simplifying assumptions B, C, D do not reach order " + std::to_string(*declared);
       break;
-    case order_agreement::to_precision_given:
-      v.result = r.order(r.tolerance) > *declared ? outcome::exceeds : outcome::to_precision_given;
-      break;
-    default: v.result = outcome::contradicted;
+    default:
+      v.result = outcome::contradicted;
+      if (r.precision == 0) v.evidence += digits_held(r, *declared);
   }
   return v;
 }
 }  // namespace
 
+int orders_to_evaluate(const tableau_file& t, int max_order) {
+  if (max_order > 0) return max_order;
+  // One order past every declared one (to tell "exactly p" from "exceeds"), at least 10.
+  return std::max({10, t.order.value_or(0) + 1, t.embedding_order.value_or(0) + 1});
+}
+
+void add_algebraic_claims(claims& c, const order_condition_report<mpfr100>& r, const std::string& precision_words) {
+  c.algebraic_order = r.order(r.tolerance);
+  c.algebraic_words = order_phrase(r) + " (coefficients " + precision_words + ")";
+  if (r.precision > 0) {
+    c.coefficient_precision = r.precision;
+    c.coefficient_words = precision_words;
+  }
+  c.algebraic = {order_verdict("order", c.order, r, precision_words),
+                 condition_verdict("symplectic", c.symplectic, r.symplectic, r.symplectic_relative, r, precision_words,
+                                   "max |b_i a_ij + b_j a_ji - b_i b_j|"),
+                 condition_verdict("symmetric", c.symmetric, r.symmetric, r.symmetric_relative, r, precision_words,
+                                   "max |a_(s+1-i,s+1-j) + a_ij - b_j|, |b_(s+1-i) - b_i|")};
+}
+
 tableau_analysis analyse(const tableau_file& t, int max_order) {
+  max_order = orders_to_evaluate(t, max_order);
   tableau_analysis a;
   a.name = t.name;
   a.path = t.path;
@@ -307,7 +364,9 @@ tableau_analysis analyse(const tableau_file& t, int max_order) {
     v.measured = std::to_string(a.method.stage_order);
     v.evidence = "C(q): sum_j a_ij c_j^(k-1) = c_i^k / k for k <= q holds to q = " +
                  std::to_string(a.method.stage_order) + " at the precision given, q = " +
-                 std::to_string(a.method.stage_order_exact) + " exactly (" + t.precision_words + ")";
+                 std::to_string(a.method.stage_order_exact) + " exactly (" + t.precision_words +
+                 "); the stage order as the largest q with both B(q) and C(q): " +
+                 std::to_string(a.method.stage_order_bc) + " (the declared stage order is read as C(q))";
     using outcome = verdict::outcome;
     if (!t.stage_order) v.result = outcome::not_declared;
     else if (a.method.stage_order < *t.stage_order) v.result = outcome::contradicted;
@@ -315,10 +374,12 @@ tableau_analysis analyse(const tableau_file& t, int max_order) {
     else v.result = a.method.stage_order_exact >= *t.stage_order ? outcome::confirmed : outcome::to_precision_given;
     a.verdicts.push_back(v);
   }
-  a.verdicts.push_back(condition_verdict("symplectic", t.symplectic, a.method.symplectic, a.method,
-                                         t.precision_words, "max |b_i a_ij + b_j a_ji - b_i b_j|"));
-  a.verdicts.push_back(condition_verdict("symmetric", t.symmetric, a.method.symmetric, a.method,
-                                         t.precision_words, "max |a_(s+1-i,s+1-j) + a_ij - b_j|, |b_(s+1-i) - b_i|"));
+  a.verdicts.push_back(condition_verdict("symplectic", t.symplectic, a.method.symplectic,
+                                         a.method.symplectic_relative, a.method, t.precision_words,
+                                         "max |b_i a_ij + b_j a_ji - b_i b_j|"));
+  a.verdicts.push_back(condition_verdict("symmetric", t.symmetric, a.method.symmetric, a.method.symmetric_relative,
+                                         a.method, t.precision_words,
+                                         "max |a_(s+1-i,s+1-j) + a_ij - b_j|, |b_(s+1-i) - b_i|"));
   return a;
 }
 
@@ -345,29 +406,32 @@ tableau_analysis failed_tableau(const std::string& path, const std::string& mess
 std::string describe(const tableau_analysis& a) {
   if (!a.failure.empty()) return "tableau " + a.path + ": FAILED: " + a.failure + "\n";
   std::ostringstream os;
-  const auto& trees = rooted_trees(a.method.max_order);
   os << "tableau " << a.name << " (" << a.path << "): " << a.stages << " stages, " << a.kind
      << "; coefficients " << a.precision_words << "\n"
-     << "  order conditions in mpfr100, largest |Phi(t) - 1/gamma(t)| over the trees of each order:\n"
-     << "    order  trees  method";
-  if (a.embedding) os << "    embedding";
+     << "  order conditions in mpfr100, largest |Phi(t) - 1/gamma(t)| over the trees of each order"
+        " (relative: divided by |t| times Phi of the coefficients' absolute values):\n"
+     << "    order     trees  method   relative";
+  if (a.embedding) os << "  embedding  relative";
   os << "\n";
   for (int k = 1; k <= a.method.max_order; ++k) {
-    int count = 0;
-    for (const auto& t : trees) count += t.order == k ? 1 : 0;
-    char line[128];
-    std::snprintf(line, sizeof line, "    %5d  %5d  %.1e", k, count, a.method.residual[std::size_t(k - 1)]);
+    char line[160];
+    std::snprintf(line, sizeof line, "    %5d  %8llu  %.1e  %.1e", k,
+                  static_cast<unsigned long long>(a.method.trees[std::size_t(k - 1)]),
+                  a.method.residual[std::size_t(k - 1)], a.method.relative[std::size_t(k - 1)]);
     os << line;
     if (a.embedding) {
-      std::snprintf(line, sizeof line, "    %.1e", a.embedding->residual[std::size_t(k - 1)]);
+      std::snprintf(line, sizeof line, "    %.1e  %.1e", a.embedding->residual[std::size_t(k - 1)],
+                    a.embedding->relative[std::size_t(k - 1)]);
       os << line;
     }
     os << "\n";
   }
+  if (!a.method.limit.empty()) os << "  trees evaluated to order " << a.method.max_order << ": " << a.method.limit << "\n";
   os << "  method: " << order_phrase(a.method) << "\n";
   if (a.embedding) os << "  embedding: " << order_phrase(*a.embedding) << "\n";
   os << "  " << row_sum_words(a.method) << "; stage order " << a.method.stage_order
-     << " (exactly " << a.method.stage_order_exact << "); symplecticity condition max |b_i a_ij + b_j a_ji - b_i b_j| = "
+     << " (exactly " << a.method.stage_order_exact << "; with B(q) as well: " << a.method.stage_order_bc
+     << "); symplecticity condition max |b_i a_ij + b_j a_ji - b_i b_j| = "
      << sci(a.method.symplectic) << "; symmetry condition " << sci(a.method.symmetric) << " (tolerance "
      << sci(a.method.tolerance) << " at the precision given, " << sci(a.method.exact_tolerance) << " exactly)\n";
   for (const auto& v : a.verdicts)
@@ -381,6 +445,14 @@ std::string to_json(const tableau_analysis& a) {
   if (!a.failure.empty()) return json{{"name", a.name}, {"file", a.path}, {"failure", a.failure}}.dump(1) + "\n";
   const auto report = [](const order_condition_report<mpfr100>& r) {
     return json{{"residual_by_order", r.residual},
+                {"relative_residual_by_order", r.relative},
+                {"trees_by_order", r.trees},
+                {"orders_evaluated_by_trees", r.max_order},
+                {"orders_not_evaluated_because", r.limit},
+                {"simplifying_assumptions_order", r.simplified_order(r.tolerance)},
+                {"stage_order_b_and_c", r.stage_order_bc},
+                {"symplectic_condition_relative", r.symplectic_relative},
+                {"symmetry_condition_relative", r.symmetric_relative},
                 {"order_at_precision_given", r.order(r.tolerance)},
                 {"order_exactly", r.order(r.exact_tolerance)},
                 {"order_to_1e-8", r.order(1e-8)},

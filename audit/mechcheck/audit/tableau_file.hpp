@@ -35,6 +35,7 @@
 /// and have one solution (Newton's matrix I - h A (x) J is regular for small h); a singular
 /// A costs stiff accuracy, not existence, so such a tableau is accepted.
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -61,6 +62,10 @@ inline constexpr std::size_t max_stages = 64;
 inline constexpr std::size_t max_tableau_bytes = std::size_t(16) << 20;
 /// Decimals with at most this many significant digits are exact (0.5, 0.25, 0.125).
 inline constexpr int short_decimal_digits = 4;
+/// The fields of a tableau file; any other is a tableau_error naming it and these.
+inline constexpr std::array<std::string_view, 12> tableau_fields{
+    "name", "source", "A", "b", "c", "bhat", "order", "embedding_order", "stage_order",
+    "symplectic", "symmetric", "precision"};
 
 struct tableau_file {
   std::string path;
@@ -100,7 +105,9 @@ coefficient_text read_coefficient(const std::string& text, const std::string& wh
 enum class order_agreement {
   exact,               ///< within mpfr100 rounding
   to_precision_given,  ///< within the rounding of the precision the coefficients are given to
-  contradicted         ///< fails by more
+  contradicted,        ///< fails by more
+  not_evaluated        ///< conditions of some order up to it were not evaluated (budget), and
+                       ///< the simplifying assumptions do not reach it
 };
 
 struct tableau_analysis {
@@ -125,8 +132,13 @@ struct tableau_analysis {
   }
 };
 
-/// The analysis of a tableau (order conditions up to max_order).
-tableau_analysis analyse(const tableau_file& t, int max_order = 10);
+/// The orders analyse() evaluates by trees: max_order when positive, else one past every
+/// declared order and at least 10.
+int orders_to_evaluate(const tableau_file& t, int max_order = 0);
+
+/// The analysis of a tableau (order conditions up to orders_to_evaluate(t, max_order), as
+/// far as order_condition_budget allows).
+tableau_analysis analyse(const tableau_file& t, int max_order = 0);
 
 /// The agreement of a declared order p with a report.
 order_agreement agreement(const order_condition_report<mpfr100>& r, int p);

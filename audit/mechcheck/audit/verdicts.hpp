@@ -331,19 +331,26 @@ inline verdict judge_order(const claims& c, const std::vector<problem_audit>& ps
 }
 
 /// A yes/no property (symplectic, symmetric): the defect within its rounding budget (AD)
-/// or below its resolution (finite differences) on every problem measured.
-///   declared yes: confirmed when within everywhere, contradicted by a defect above;
-///   declared no: confirmed by a defect above on some problem; within everywhere is
-///     exceeds where the Jacobian came by AD (a budget of rounding), and not resolvable by
-///     finite differences (a high-order method's defect may lie below their resolution).
+/// or below its resolution (finite differences) on every problem measured. Where the
+/// coefficients are given to a relative precision `coarse` coarser than the tier's (16 eps),
+/// a defect within the budget of a tier of that epsilon is what such coefficients allow.
+///   declared yes: confirmed when within everywhere; to the precision given when within
+///     what the coefficients allow; contradicted by a defect above that;
+///   declared no: confirmed by a defect above what the coefficients allow on some problem;
+///     a defect within the tier's rounding budget (AD) is not resolvable in a tier coarser
+///     than 1e-20 (a lower floor would resolve it: -t mpfr50), exceeds in a finer one; a
+///     defect within what the coefficients allow is not resolvable; by finite differences
+///     not resolvable (a high-order method's defect may lie below their resolution).
 template <class Member>
 verdict judge_property(const char* name, const std::optional<bool>& claim,
-                       const std::vector<problem_audit>& ps, Member member) {
+                       const std::vector<problem_audit>& ps, Member member, double eps = 0,
+                       std::optional<double> coarse = {}) {
   using outcome = verdict::outcome;
   verdict v;
   v.claim = name;
   v.declared = claim ? (*claim ? "yes" : "no") : "-";
-  bool any = false, all_within = true, by_fd = false;
+  const bool precision_counts = coarse && eps > 0 && *coarse > 16 * eps;
+  bool any = false, all_within = true, all_within_given = true, by_fd = false;
   double coarsest = 0;
   std::string evidence;
   for (const auto& p : ps) {
@@ -351,6 +358,10 @@ verdict judge_property(const char* name, const std::optional<bool>& claim,
     if (!p.skipped.empty() || !d) continue;
     any = true;
     all_within = all_within && d->within_rounding;
+    // At the floors of a tier whose epsilon is the coefficients' precision.
+    const bool within_given = d->within_rounding || (precision_counts && d->resolution == 0 &&
+                                                     d->worst_eps * eps / *coarse <= d->budget_eps);
+    all_within_given = all_within_given && within_given;
     if (d->resolution > 0) {
       by_fd = true;
       coarsest = std::max(coarsest, d->resolution);
@@ -365,25 +376,35 @@ verdict judge_property(const char* name, const std::optional<bool>& claim,
     } else {
       evidence += p.problem + ": " + detail::sci(d->worst_eps) + " eps (budget " +
                   detail::sci(d->budget_eps) + ")";
+      if (!d->within_rounding && within_given)
+        evidence += ", " + detail::sci(d->worst_eps * eps / *coarse) + " in units of the coefficients' precision " +
+                    detail::sci(*coarse) + ": within what they allow";
     }
     if (!d->within_rounding && d->exponent.used > 0)
       evidence += ", ~ h^" + detail::fixed(d->exponent.value, 1);
     evidence += "; ";
   }
-  v.measured = !any ? "-" : all_within ? "yes" : "no";
+  v.measured = !any ? "-" : !all_within_given ? "no" : all_within ? (by_fd ? "yes" : "to rounding") : "to the precision given";
   v.evidence = evidence;
   if (!any) {
     v.result = outcome::not_measured;
   } else if (!claim) {
     v.result = outcome::not_declared;
   } else if (*claim) {
-    v.result = all_within ? outcome::confirmed : outcome::contradicted;
-  } else if (!all_within) {
+    v.result = all_within ? outcome::confirmed : all_within_given ? outcome::to_precision_given : outcome::contradicted;
+  } else if (!all_within_given) {
     v.result = outcome::confirmed;
   } else if (by_fd) {
     v.result = outcome::not_resolvable;
     v.needs = "a defect below the finite differences' resolution (" + detail::sci(coarsest) +
               ") cannot be told from none: the Jacobian by AD, or a larger step";
+  } else if (!all_within) {
+    v.result = outcome::not_resolvable;
+    v.needs = "coefficients given to more digits: the defect lies within what coefficients given to " +
+              detail::sci(*coarse) + " allow";
+  } else if (eps > 1e-20) {
+    v.result = outcome::not_resolvable;
+    v.needs = "a tier with a lower rounding floor (-t mpfr50): the defect lies within this tier's rounding budget";
   } else {
     v.result = outcome::exceeds;
     v.evidence += "within the rounding budget on every problem measured, though declared not";
@@ -456,12 +477,41 @@ inline verdict judge_energy(const claims& c, const std::vector<problem_audit>& p
   return v;
 }
 
+/// Where a stepper is a tableau (claims::algebra_decides), the algebra's verdict on a
+/// claim stands and the measurement is quoted beside it; where the two differ, the evidence
+/// says so and why the measurement did not decide: the algebra is exact arithmetic on the
+/// coefficients at the precision they are given to, the measurement a fit or a defect on a
+/// few problems in one tier, bounded by its floors.
+inline verdict with_algebra(const verdict& measured, const claims& c) {
+  if (!c.algebra_decides) return measured;
+  const auto a = std::find_if(c.algebraic.begin(), c.algebraic.end(),
+                              [&](const verdict& x) { return x.claim == measured.claim; });
+  if (a == c.algebraic.end() || a->result == verdict::outcome::not_declared) return measured;
+  verdict v = *a;
+  v.measured = a->measured + " (algebra)";
+  const bool differ = a->result != measured.result;
+  v.evidence = "the coefficients' algebra decides: " + a->evidence + ". The stepper measured: " +
+               outcome_text(measured.result) + (measured.needs.empty() ? "" : " (needs " + measured.needs + ")") +
+               ", measured " + measured.measured + " -- " + measured.evidence;
+  if (differ)
+    v.evidence += std::string(" The two differ: ") +
+                  (measured.result == verdict::outcome::not_measured
+                       ? "nothing was measured"
+                       : "the measurement cannot resolve what the algebra decides exactly (its floors, its "
+                         "problems' leading error terms, a fit over a finite range)");
+  return v;
+}
+
 /// Every verdict of a stepper: order, symplectic, symmetric, energy (in that order).
 inline std::vector<verdict> judge(const claims& declared, const std::vector<problem_audit>& ps,
                                   double eps) {
-  return {judge_order(declared, ps, eps),
-          judge_property("symplectic", declared.symplectic, ps, &problem_audit::symplectic),
-          judge_property("symmetric", declared.symmetric, ps, &problem_audit::symmetric),
+  return {with_algebra(judge_order(declared, ps, eps), declared),
+          with_algebra(judge_property("symplectic", declared.symplectic, ps, &problem_audit::symplectic, eps,
+                                      declared.coefficient_precision),
+                       declared),
+          with_algebra(judge_property("symmetric", declared.symmetric, ps, &problem_audit::symmetric, eps,
+                                      declared.coefficient_precision),
+                       declared),
           judge_energy(declared, ps)};
 }
 
