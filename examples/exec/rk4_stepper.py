@@ -32,6 +32,8 @@ def number(v):
 
 
 def rhs(t, y):
+    # A stage that has diverged is sent as it is ("nan", "inf"): the audit answers with an
+    # error and records the run as diverged at this step; the error goes back as the step's.
     send({"op": "rhs", "t": t.hex(), "y": [v.hex() for v in y]})
     reply = receive()
     if "error" in reply:

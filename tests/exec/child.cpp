@@ -125,6 +125,11 @@ vec step(double t, double h, vec y) {
     return y;
   }
   if (mode == "euler_says_2") return axpy(y, h, rhs(t, y));
+  if (mode == "asks_nan") {  // a diverged stage: f asked for at a state that is not finite
+    vec bad = y;
+    bad[0] = std::nan("");
+    return axpy(y, h, rhs(t, bad));
+  }
   const vec k1 = rhs(t, y), k2 = rhs(t + h / 2, axpy(y, h / 2, k1)), k3 = rhs(t + h / 2, axpy(y, h / 2, k2)),
             k4 = rhs(t + h, axpy(y, h, k3));
   for (std::size_t i = 0; i < n; ++i) y[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);

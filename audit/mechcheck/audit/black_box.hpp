@@ -213,15 +213,19 @@ class black_box_run {
                                 ", h = " + to_text(h) + " returned status " + std::to_string(status) +
                                 (view_.failure().empty() ? "" : " (" + view_.failure() + ")"));
     } else {
-      box_.step(y_.data(), t_, h, context_);
+      try {
+        box_.step(y_.data(), t_, h, context_);
+      } catch (const non_finite_error& e) {  // a child's state that is not finite: where it went
+        throw non_finite_error(box_.name + ": diverged at step " + std::to_string(steps_) + ": " + e.what());
+      }
     }
     if (!view_.failure().empty())
       throw error(box_.name + ": step " + std::to_string(steps_) + " at t = " + to_text(t_) +
                   ", h = " + to_text(h) + ": " + view_.failure());
     for (std::size_t i = 0; i < y_.size(); ++i)
       if (!std::isfinite(y_[i]))
-        throw non_finite_error(box_.name + ": step " + std::to_string(steps_) + " at t = " +
-                               to_text(t_) + ", h = " + to_text(h) + " left y[" +
+        throw non_finite_error(box_.name + ": diverged at step " + std::to_string(steps_) + " at t = " +
+                               to_text(t_) + ", h = " + to_text(h) + ": it left y[" +
                                std::to_string(i) + "] = " + to_text(y_[i]) + " from q = " +
                                to_text(x.q) + ", p = " + to_text(x.p));
     std::copy(y_.data(), y_.data() + nq, x.q.data());

@@ -93,8 +93,10 @@ std::optional<double> number_text_value(std::string_view s) {
   return negative ? -x : x;
 }
 
-/// A number of a reply: a JSON number, or a string in C's decimal or hexadecimal form.
-double number_of(const json& v, const std::string& what) {
+/// A number of a reply: a JSON number, or a string in C's decimal or hexadecimal form;
+/// "nan" and "inf" (what C's %a and Python's float.hex write) are read, and refused unless
+/// `finite_only` is false.
+double number_of(const json& v, const std::string& what, bool finite_only = true) {
   double x = 0;
   if (v.is_number()) {
     x = v.get<double>();
@@ -107,7 +109,7 @@ double number_of(const json& v, const std::string& what) {
   } else {
     throw exec_error(what + ": " + excerpt_json(v) + " is not a number");
   }
-  if (!std::isfinite(x)) throw exec_error(what + " is not finite (" + excerpt_json(v) + ")");
+  if (finite_only && !std::isfinite(x)) throw exec_error(what + " is not finite (" + excerpt_json(v) + ")");
   return x;
 }
 
@@ -117,16 +119,24 @@ json numbers_json(const double* x, int n, bool decimal) {
   return a;
 }
 
-/// Reads `n` numbers of a reply's field into out.
-void numbers_into(const json& reply, std::string_view field, int n, double* out, const std::string& what) {
+/// Reads `n` numbers of a reply's field into out. With finite_only false, a state's numbers
+/// may be "nan" or "inf" (a diverged run): the first such one is returned as "y[2] = nan"
+/// ("" when all are finite).
+std::string numbers_into(const json& reply, std::string_view field, int n, double* out, const std::string& what,
+                         bool finite_only = true) {
   const auto it = reply.find(field);
   if (it == reply.end() || !it->is_array())
     throw exec_error(what + ": the reply has no array \"" + std::string(field) + "\": " + excerpt_json(reply));
   if (it->size() != static_cast<std::size_t>(n))
     throw exec_error(what + ": \"" + std::string(field) + "\" has " + std::to_string(it->size()) + " numbers, " +
                      std::to_string(n) + " expected");
-  for (int i = 0; i < n; ++i)
-    out[i] = number_of((*it)[std::size_t(i)], what + ": " + std::string(field) + "[" + std::to_string(i) + "]");
+  std::string first;
+  for (int i = 0; i < n; ++i) {
+    const std::string name = std::string(field) + "[" + std::to_string(i) + "]";
+    out[i] = number_of((*it)[std::size_t(i)], what + ": " + name, finite_only);
+    if (first.empty() && !std::isfinite(out[i])) first = name + " = " + to_text(out[i]);
+  }
+  return first;
 }
 
 /// A string field no longer than `limit` (empty when absent and not required).
@@ -489,9 +499,9 @@ json exchange(session& s, const json& request, const std::string& what, const se
       const std::string call = what + ": its " + excerpt_json(*op) + " request";
       std::optional<json> answer;
       try {
-        if (serve) answer = serve(reply, call);
+        if (serve) answer = serve(reply, "the request");
       } catch (const exec_error& e) {
-        throw c.failure(call, e.what());
+        throw c.failure(call, e.what());  // its context once: `call`, then what was wrong
       }
       if (!answer) throw c.failure(what, "an unknown request " + excerpt_json(*op) + " from the child");
       c.send(*answer, call);
@@ -526,6 +536,9 @@ struct run_context {
   long long id = 0;
   bool open = false;
   std::vector<double> y, f, jac;
+  /// The child asked for f at a non-finite state during this step ("y[0] = nan"): the run
+  /// diverged (answered with an error; the step ends the run, the child goes on).
+  std::string diverged;
 };
 
 /// The parent's answers to a stepper's "rhs" and "jacobian".
@@ -539,10 +552,13 @@ serve_function problem_server(run_context& r) {
       const int nq = r.ode.nq, np = r.ode.dimension - r.ode.nq, in = force ? nq : np, out = force ? np : nq;
       r.y.resize(std::size_t(in));
       r.f.resize(std::size_t(out));
-      numbers_into(request, force ? "q" : "p", in, r.y.data(), call);
+      const std::string bad = numbers_into(request, force ? "q" : "p", in, r.y.data(), call, false);
       const double t = number_of(request.contains("t") ? request["t"] : json(0.0), call + ": t");
       json answer;
-      if ((force ? r.ode.force : r.ode.velocity)(t, r.y.data(), r.f.data(), r.ode.self) == 0)
+      if (!bad.empty()) {
+        if (r.diverged.empty()) r.diverged = bad;
+        answer["error"] = "the state is not finite (" + bad + "): the run diverged";
+      } else if ((force ? r.ode.force : r.ode.velocity)(t, r.y.data(), r.f.data(), r.ode.self) == 0)
         answer[force ? "dpdt" : "dqdt"] = numbers_json(r.f.data(), out, decimal);
       else
         answer["error"] = std::string("the ") + (force ? "force" : "velocity") + " cannot be evaluated there";
@@ -551,10 +567,13 @@ serve_function problem_server(run_context& r) {
     if (op != "rhs" && op != "jacobian") return std::nullopt;
     const int n = r.ode.dimension;
     r.y.resize(std::size_t(n));
-    numbers_into(request, "y", n, r.y.data(), call);
+    const std::string bad = numbers_into(request, "y", n, r.y.data(), call, false);
     const double t = number_of(request.contains("t") ? request["t"] : json(0.0), call + ": t");
     json answer;
-    if (op == "rhs") {
+    if (!bad.empty()) {
+      if (r.diverged.empty()) r.diverged = bad;
+      answer["error"] = "the state is not finite (" + bad + "): the run diverged";
+    } else if (op == "rhs") {
       r.f.resize(std::size_t(n));
       if (r.ode.rhs(t, r.y.data(), r.f.data(), r.ode.self) == 0)
         answer["dydt"] = numbers_json(r.f.data(), n, decimal);
@@ -597,16 +616,21 @@ void step_run(double* y, double t, double h, void* ctx) {
   const int n = r.ode.dimension;
   const bool decimal = r.s->decimal;
   const std::string what = "step of run " + std::to_string(r.id) + " at t = " + to_text(t) + ", h = " + to_text(h);
+  r.diverged.clear();
   const json reply = exchange(*r.s,
                               {{"op", "step"}, {"run", r.id}, {"t", number_text(t, decimal)}, {"h", number_text(h, decimal)},
                                {"y", numbers_json(y, n, decimal)}},
                               what, problem_server(r));
+  // A non-finite state, asked about or returned, is the run's divergence, not the child's
+  // failure: the run ends (black_box_run says at which step), the child goes on.
+  if (!r.diverged.empty())
+    throw non_finite_error(r.s->prefix() + what + ": the stepper asked for f at a non-finite state (" +
+                           r.diverged + ")");
   if (const auto e = reply.find("error"); e != reply.end())
     throw convergence_error(r.s->prefix() + what + ": the stepper failed: " + error_text(*e));
-  checked(*r.s, what, [&] {
-    numbers_into(reply, "y", n, y, "the reply");
-    return 0;
-  });
+  const std::string bad = checked(*r.s, what, [&] { return numbers_into(reply, "y", n, y, "the reply", false); });
+  if (!bad.empty())
+    throw non_finite_error(r.s->prefix() + what + ": the stepper returned a non-finite state (" + bad + ")");
 }
 
 void end_run(void* ctx) {
