@@ -189,7 +189,7 @@ TEST(black_box, bad_input_and_failing_steps_are_typed_errors) {
     bad(y, 0.1);
     FAIL() << "no error";
   } catch (const non_finite_error& e) {
-    EXPECT_NE(std::string(e.what()).find("nan step: step 1 at t = 0"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("nan step: diverged at step 1 at t = 0"), std::string::npos) << e.what();
   }
   // A failing step becomes failed runs in the audit, not a crash, and never a skip (a
   // skip is a problem the method declares it cannot run): every study fails, every claim

@@ -118,7 +118,42 @@ TEST(exec, a_crash_an_exit_and_a_broken_reply_are_typed_errors_naming_the_comman
   EXPECT_NE(exit.find("its standard error ends: \"giving up\""), std::string::npos) << exit;
   EXPECT_NE(first_step_error("malformed").find("the reply is not JSON: \"not json\""), std::string::npos);
   EXPECT_NE(first_step_error("oversized").find("longer than 1048576 bytes"), std::string::npos);
-  EXPECT_NE(first_step_error("nan").find("y[0] is not finite"), std::string::npos);
+}
+
+TEST(exec, a_non_finite_state_is_a_diverged_run_and_the_child_goes_on) {
+  // A child that returns y[0] = nan, and one that asks for f at such a state (the stage of a
+  // diverging explicit method): each step ends its run as diverged, with the state named,
+  // and neither is a child failure -- the same child serves the next step.
+  for (const auto& [mode, words] : {std::pair{"nan", "returned a non-finite state (y[0] = nan)"},
+                                    std::pair{"asks_nan", "asked for f at a non-finite state (y[0] = nan)"}}) {
+    SCOPED_TRACE(mode);
+    const auto target = audit::exec_stepper(child(mode));
+    const audit::ode_system ode = oscillator_system();
+    void* ctx = target.box.create(ode);
+    for (int step = 0; step < 2; ++step) {
+      double y[2] = {1, 0};
+      try {
+        target.box.step(y, 0, 0.1, ctx);
+        ADD_FAILURE() << "no error";
+      } catch (const non_finite_error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find(words), std::string::npos) << what;
+        // Its context once.
+        EXPECT_EQ(what.find("step of run 1"), what.rfind("step of run 1")) << what;
+      }
+    }
+    target.box.destroy(ctx);
+    EXPECT_EQ(target.failures(), 0);
+  }
+  // Through the black-box run, the step at which it diverged.
+  const auto target = audit::exec_stepper(child("asks_nan"));
+  const auto s = audit::black_box_stepper(target.box);
+  const auto a = audit::audit_stepper(s, audit::reference_problems<double>(), few_problems());
+  EXPECT_EQ(target.failures(), 0);
+  bool said = false;
+  for (const auto& p : a.problems)
+    said = said || p.global.note.find("diverged at step 1") != std::string::npos;
+  EXPECT_TRUE(said) << (a.problems.empty() ? std::string("no problem") : a.problems.front().global.note);
 }
 
 TEST(exec, a_hung_child_is_stopped_at_its_timeout_with_its_group) {

@@ -17,6 +17,8 @@
 #include "mechcheck/audit/order_conditions.hpp"
 #include "mechcheck/audit/tableau.hpp"
 #include "mechcheck/audit/tableau_file.hpp"
+#include "mechcheck/audit/verdicts.hpp"
+#include "mechcheck/integrators/gauss_legendre.hpp"
 
 namespace tableau_test {
 using namespace mechcheck;
@@ -26,12 +28,87 @@ namespace fs = std::filesystem;
 
 const fs::path dir = MECHCHECK_TABLEAU_DIR;
 
+// OEIS A000081: the rooted trees with n nodes, n = 1..20.
+const std::vector<std::uint64_t> a000081{1,     1,      2,      4,      9,       20,      48,
+                                         115,   286,    719,    1842,   4766,    12486,   32973,
+                                         87811, 235381, 634847, 1721159, 4688676, 12826228};
+
 TEST(rooted_trees, counts_are_those_of_oeis_a000081) {
-  const std::vector<int> expected{1, 1, 2, 4, 9, 20, 48, 115, 286, 719};
-  const auto& trees = audit::rooted_trees(10);
-  std::vector<int> count(10, 0);
+  const auto& trees = audit::rooted_trees(12);
+  std::vector<std::uint64_t> count(12, 0);
   for (const auto& t : trees) count[std::size_t(t.order - 1)] += 1;
-  EXPECT_EQ(count, expected);
+  EXPECT_EQ(count, std::vector<std::uint64_t>(a000081.begin(), a000081.begin() + 12));
+  for (int n = 1; n <= 20; ++n) EXPECT_EQ(audit::rooted_tree_count(n), a000081[std::size_t(n - 1)]) << n;
+  EXPECT_THROW(audit::rooted_tree_count(0), domain_error);
+  EXPECT_THROW(audit::rooted_trees(19), domain_error);
+}
+
+TEST(order_conditions, enumerate_every_tree_to_order_20_once) {
+  // A one-stage tableau in double: the conditions visit each tree of each order once.
+  const butcher_tableau<double> one{{{0.5}}, {1}, {0.5}};
+  const auto r = audit::order_conditions(one, 20);
+  EXPECT_EQ(r.max_order, 20) << r.limit;
+  EXPECT_TRUE(r.limit.empty());
+  EXPECT_EQ(r.trees, a000081);
+  // The implicit midpoint rule is of order 2 exactly: order 3 fails.
+  EXPECT_EQ(r.order(r.tolerance), 2);
+  EXPECT_EQ(r.decides(2, r.tolerance), 1);
+  EXPECT_EQ(r.decides(3, r.tolerance), -1);
+}
+
+/// The s-stage Gauss-Legendre tableau of the library in mpfr100.
+butcher_tableau<mpfr100> gauss(int s) {
+  const gauss_legendre_tableau<mpfr100> g(s);
+  return {g.a, g.b, g.c};
+}
+
+TEST(order_conditions, gauss_legendre_has_order_2s_by_every_tree_to_order_15) {
+  // Gauss 7 is of order 14: every condition of the 141083 trees of orders 1..15 is
+  // evaluated, those to order 14 hold (a wrong density or a skipped tree would break one by
+  // order one), order 15 fails. The library's nodes and weights are Newton roots to a few
+  // ulps of mpfr100: given to 1e-90, far below any order-one defect.
+  const auto r = audit::order_conditions(gauss(7), 15, 1e-90);
+  EXPECT_EQ(r.max_order, 15) << r.limit;
+  EXPECT_EQ(r.order(r.tolerance), 14);
+  // Order 15 fails by the method's error constant (about (7!)^4 / ((14!)^2 15) = 6e-9 in
+  // the bushy tree), eighty orders of magnitude above the coefficients' 1e-90.
+  EXPECT_GT(r.relative[14], 1e-9);
+  EXPECT_EQ(r.trees[14], 87811u);
+  // The simplifying assumptions give the same: B(14), C(7), D(7).
+  EXPECT_EQ(r.simplified_order(r.tolerance), 14);
+  EXPECT_EQ(r.stage_order, 7);
+  EXPECT_EQ(r.stage_order_bc, 7);
+}
+
+TEST(order_conditions, beyond_the_budget_the_simplifying_assumptions_decide_or_nothing_does) {
+  // Gauss 10 (order 20) under a budget of 16384 stored values: trees to order 12 only; B(20),
+  // C(10), D(10) prove order 20, and B(21), the bushy tree of order 21, fails.
+  const audit::order_condition_budget small{16384, std::uint64_t(1) << 20};
+  const auto g = audit::order_conditions(gauss(10), 21, 1e-90, small);
+  EXPECT_EQ(g.max_order, 12) << g.limit;
+  EXPECT_NE(g.limit.find("order 13 needs"), std::string::npos) << g.limit;
+  EXPECT_EQ(g.decides(20, g.tolerance), 1);
+  EXPECT_EQ(g.decides(21, g.tolerance), -1);
+  EXPECT_EQ(g.order(g.tolerance), 20);
+  // RK4 under a budget that reaches order 2: B(4), C(1) and D(1) give order 3 only, so its
+  // order 4 is decided by nothing -- never confirmed: not resolvable, with the reason.
+  const auto file = audit::read_tableau(dir / "rk4.json");
+  const auto f = audit::order_conditions(file.tableau, 5, 0, {3, std::uint64_t(1) << 20});
+  EXPECT_EQ(f.max_order, 2) << f.limit;
+  EXPECT_EQ(f.simplified_order(f.tolerance), 3);
+  EXPECT_EQ(f.decides(3, f.tolerance), 1);
+  EXPECT_EQ(f.decides(4, f.tolerance), 0);
+  audit::claims c;
+  c.order = 4;
+  audit::add_algebraic_claims(c, f, "exact");
+  ASSERT_EQ(c.algebraic.size(), 3u);
+  EXPECT_EQ(c.algebraic[0].result, outcome::not_resolvable) << c.algebraic[0].evidence;
+  EXPECT_NE(c.algebraic[0].needs.find("order 3 to 4"), std::string::npos) << c.algebraic[0].needs;
+  // A false claim above the budget is still refuted by its bushy tree: order 5 of RK4
+  // (b^T c^4 = 5/24, not 1/5).
+  c.order = 5;
+  audit::add_algebraic_claims(c, f, "exact");
+  EXPECT_EQ(c.algebraic[0].result, outcome::contradicted) << c.algebraic[0].evidence;
 }
 
 /// sigma(t): the order of t's symmetry group, prod over distinct subtrees u of
@@ -397,6 +474,142 @@ TEST(tableau_file, coefficients_are_read_without_double) {
   EXPECT_THROW(audit::parse_coefficient("1/3/4", "x"), audit::tableau_error);
   EXPECT_THROW(audit::parse_coefficient("nan", "x"), audit::tableau_error);
   EXPECT_THROW(audit::parse_coefficient("", "x"), audit::tableau_error);
+}
+
+TEST(tableau_file, an_order_claim_above_10_is_judged_by_its_trees_in_the_analysis_and_the_stepper) {
+  // gauss5.json (order 10) declaring order 11: the conditions of order 11 are evaluated and
+  // fail, in the analysis and in the claims its stepper carries; whatever the stepper
+  // measures, the algebra's verdict stands.
+  std::ifstream in(dir / "gauss5.json");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text.replace(text.find("\"order\": 10"), 11, "\"order\": 11");
+  const auto file = audit::parse_tableau(text, "gauss5_11");
+  const auto a = audit::analyse(file);
+  EXPECT_EQ(a.method.max_order, 12);
+  EXPECT_EQ(a.find("order")->result, outcome::contradicted) << audit::describe(a);
+  const auto steppers = audit::tableau_file_steppers<double>(file);
+  ASSERT_EQ(steppers.size(), 1u);
+  const audit::claims& c = steppers[0].declared;
+  EXPECT_TRUE(c.algebra_decides);
+  audit::verdict measured;
+  measured.claim = "order";
+  measured.declared = "11";
+  measured.measured = "11.02";
+  measured.result = outcome::confirmed;
+  measured.evidence = "a fit that has not settled; ";
+  const audit::verdict v = audit::with_algebra(measured, c);
+  EXPECT_EQ(v.result, outcome::contradicted) << v.evidence;
+  EXPECT_NE(v.evidence.find("The two differ"), std::string::npos) << v.evidence;
+  EXPECT_NE(v.evidence.find("11.02"), std::string::npos) << v.evidence;
+  // Declaring its true order 10: confirmed, and a measurement that contradicts (a tier whose
+  // floors the fit mistook) does not change it.
+  text.replace(text.find("\"order\": 11"), 11, "\"order\": 10");
+  const auto right = audit::tableau_file_steppers<double>(audit::parse_tableau(text, "gauss5"));
+  measured.declared = "10";
+  measured.result = outcome::contradicted;
+  EXPECT_EQ(audit::with_algebra(measured, right[0].declared).result, outcome::confirmed);
+  // A library's own implementation of a table keeps its measured verdict.
+  audit::claims library = right[0].declared;
+  library.algebra_decides = false;
+  EXPECT_EQ(audit::with_algebra(measured, library).result, outcome::contradicted);
+}
+
+/// A problem whose `member` defect study measured `worst` eps against a budget of 512.
+audit::problem_audit defect(double worst, bool within) {
+  audit::problem_audit p;
+  p.problem = "synthetic";
+  audit::defect_study d;
+  d.worst_eps = worst;
+  d.budget_eps = 512;
+  d.within_rounding = within;
+  p.symplectic = d;
+  return p;
+}
+
+TEST(verdicts, a_defect_within_the_coefficients_precision_or_under_the_tiers_budget_is_no_accusation) {
+  const double eps50 = static_cast<double>(std::numeric_limits<mpfr50>::epsilon());
+  const auto judge = [](std::optional<bool> claim, const audit::problem_audit& p, double eps,
+                        std::optional<double> coarse = {}) {
+    return audit::judge_property("symplectic", claim, {p}, &audit::problem_audit::symplectic, eps, coarse);
+  };
+  // Gauss 3 given to 40 digits, measured in mpfr50: a defect of 4.2e8 eps lies within what
+  // coefficients good to 5e-40 allow (4.2e8 eps50 / 5e-40 is about 1e-1 of their eps, under
+  // the budget of 512): to the precision given, not contradicted; exact coefficients would be.
+  const auto forty = defect(4.2e8, false);
+  EXPECT_EQ(judge(true, forty, eps50, 5e-40).result, outcome::to_precision_given);
+  EXPECT_EQ(judge(true, forty, eps50).result, outcome::contradicted);
+  // Just above what they allow: contradicted (the budget's edge, both sides).
+  const double edge = 512 * 5e-40 / eps50;
+  EXPECT_EQ(judge(true, defect(edge * 0.99, false), eps50, 5e-40).result, outcome::to_precision_given);
+  EXPECT_EQ(judge(true, defect(edge * 1.01, false), eps50, 5e-40).result, outcome::contradicted);
+  // Declared not symplectic: a defect within what the coefficients allow cannot tell; one
+  // above it confirms the declaration.
+  EXPECT_EQ(judge(false, forty, eps50, 5e-40).result, outcome::not_resolvable);
+  EXPECT_EQ(judge(false, defect(edge * 1.01, false), eps50, 5e-40).result, outcome::confirmed);
+  // Declared not symplectic, the defect within double's rounding budget: not resolvable in
+  // double (a lower floor would resolve it), never "measured yes"; within mpfr50's: exceeds.
+  const audit::verdict d = judge(false, defect(3, true), 0x1p-52);
+  EXPECT_EQ(d.result, outcome::not_resolvable);
+  EXPECT_NE(d.needs.find("-t mpfr50"), std::string::npos) << d.needs;
+  EXPECT_NE(d.measured, "yes");
+  EXPECT_EQ(judge(false, defect(3, true), eps50).result, outcome::exceeds);
+  // A precision no coarser than the tier's (double coefficients in double) changes nothing.
+  EXPECT_EQ(judge(true, defect(600, false), 0x1p-52, 0x1p-53).result, outcome::contradicted);
+}
+
+TEST(tableau_file, a_method_declared_not_symplectic_reads_as_its_algebra_says_in_every_tier) {
+  // Radau IIA 3 declared not symplectic (its condition fails by order one): confirmed by the
+  // algebra whatever the one-step defect of a coarse tier shows; the implicit midpoint rule
+  // declared not symplectic is exceeded.
+  const auto radau = audit::tableau_file_steppers<double>(audit::read_tableau(dir / "radau_iia3.json"));
+  audit::verdict under_budget;
+  under_budget.claim = "symplectic";
+  under_budget.declared = "no";
+  under_budget.result = outcome::not_resolvable;
+  under_budget.needs = "a tier with a lower rounding floor (-t mpfr50)";
+  const audit::verdict v = audit::with_algebra(under_budget, radau[0].declared);
+  EXPECT_EQ(v.result, outcome::confirmed) << v.evidence;
+  EXPECT_NE(v.evidence.find("-t mpfr50"), std::string::npos) << v.evidence;
+}
+
+TEST(tableau_file, a_field_it_does_not_know_is_an_error_naming_it_and_the_fields_it_knows) {
+  const std::string what = error_of(R"({"A": [["1/2"]], "b": ["1"], "c": ["1/2"], "symplectc": true})");
+  EXPECT_NE(what.find("\"symplectc\""), std::string::npos) << what;
+  for (const auto& f : audit::tableau_fields) EXPECT_NE(what.find(std::string(f)), std::string::npos) << f;
+}
+
+TEST(tableau_file, exact_rationals_that_approximate_a_method_say_the_digits_they_hold) {
+  // RK4 with b_1 = 1/6 + 1e-26 as an exact rational: not consistent as exact numbers (sum b
+  // - 1 = 1e-26), and the evidence says they hold the method to 26 digits and names the
+  // field that says so.
+  const std::string text =
+      R"({"A": [["0","0","0","0"],["1/2","0","0","0"],["0","1/2","0","0"],["0","0","1","0"]],)"
+      R"( "b": ["100000000000000000000000006/600000000000000000000000000","1/3","1/3","1/6"],)"
+      R"( "c": ["0","1/2","1/2","1"], "order": 4})";
+  const auto a = audit::analyse(audit::parse_tableau(text, "rk4_26"));
+  const audit::verdict* v = a.find("order");
+  EXPECT_EQ(v->result, outcome::contradicted) << v->evidence;
+  EXPECT_NE(v->evidence.find("about 26 digits"), std::string::npos) << v->evidence;
+  EXPECT_NE(v->evidence.find("\"precision\": 26"), std::string::npos) << v->evidence;
+  // Declared to 26 digits, they hold it.
+  const auto given = audit::analyse(audit::parse_tableau(
+      std::string(text).insert(1, R"("precision": 26, )"), "rk4_26"));
+  EXPECT_EQ(given.find("order")->result, outcome::to_precision_given) << audit::describe(given);
+}
+
+TEST(tableau_file, stage_order_in_both_definitions) {
+  // The trapezoidal rule's A with b = (1, 0): C(2) holds, B(2) does not (b^T c = 0): stage
+  // order 2 as C(q) alone, 1 with B(q) as well. Radau IIA 3: C(3) and B(5): 3 and 3.
+  const auto t = audit::analyse(audit::parse_tableau(
+      R"({"A": [["0","0"],["1/2","1/2"]], "b": ["1","0"], "c": ["0","1"], "stage_order": 2})", "trapezoid_b10"));
+  EXPECT_EQ(t.method.stage_order, 2);
+  EXPECT_EQ(t.method.stage_order_bc, 1);
+  EXPECT_EQ(t.find("stage order")->result, outcome::confirmed);
+  EXPECT_NE(t.find("stage order")->evidence.find("both B(q) and C(q): 1"), std::string::npos)
+      << t.find("stage order")->evidence;
+  const auto r = audit::analyse(audit::read_tableau(dir / "radau_iia3.json"));
+  EXPECT_EQ(r.method.stage_order, 3);
+  EXPECT_EQ(r.method.stage_order_bc, 3);
 }
 
 }  // namespace tableau_test

@@ -46,6 +46,18 @@ expect 1 "wrote .*tableaus.md" --tableau "$work/euler.json" --tableau "$work/wro
 grep -q "| euler | 1 | explicit" "$work/batch/tableaus.md" && grep -q "| wrong | - | FAILED: .*A\[0\] has 2 entries" \
   "$work/batch/tableaus.md" && grep -q "| missing | - | FAILED: .*cannot be read" "$work/batch/tableaus.md" &&
   grep -q "tableau::euler" "$work/batch/audit.md" || { echo "FAILED: the batch's report lacks a row"; failed=1; }
+# --require sees a tableau file's algebraic claims: Heun's method declaring stage order 2
+# (its C(2) fails: a_21 c_1 = 0, not c_2^2/2) exits 2 naming the claim; declaring 1, 0. A
+# misspelt claim is an error naming the field.
+printf '{"A": [["0","0"],["1","0"]], "b": ["1/2","1/2"], "c": ["0","1"], "order": 2, "stage_order": 2}' > "$work/heun.json"
+expect 2 "tableau::heun .*stage order declared 2 is contradicted" --tableau "$work/heun.json" --require '*' \
+  -t double -p oscillator --long-run-steps 0 -q -o "$work/heun"
+printf '{"A": [["0","0"],["1","0"]], "b": ["1/2","1/2"], "c": ["0","1"], "order": 2, "stage_order": 1}' > "$work/heun.json"
+expect 0 "audited 1 stepper-tier pairs" --tableau "$work/heun.json" --require '*' \
+  -t double -p oscillator --long-run-steps 0 -q -o "$work/heun"
+printf '{"A": [["1/2"]], "b": ["1"], "c": ["1/2"], "symplectc": true}' > "$work/typo.json"
+expect 1 "has the field \"symplectc\", which a tableau file does not have .*symplectic" --tableau "$work/typo.json" \
+  -t double -p oscillator --long-run-steps 0 -q -o "$work/typo"
 # --list names every kind; --help names the tableaus.
 for section in "steppers \([0-9]+;" "adaptive drivers \([0-9]+;" "engine integrators \([0-9]+;" \
                "engine scenarios \(14;" "problems \([0-9]+;"; do

@@ -65,16 +65,24 @@ console.log(`cannon_version ${version}`);
 {
   const { world, b } = body();
   const l0 = momentum(b);
-  let worst = 0;
+  let worst = 0, magnitude = 0, angle = 0;
   for (let n = 1; n <= 10000; ++n) {
     world.step(0.01);
     const l = momentum(b);
     worst = Math.max(worst, norm(l.map((x, i) => x - l0[i])) / norm(l0));
+    // The vector's change split: its length, and the angle it turns through.
+    magnitude = Math.max(magnitude, Math.abs(norm(l) - norm(l0)) / norm(l0));
+    const cross = [l[1] * l0[2] - l[2] * l0[1], l[2] * l0[0] - l[0] * l0[2], l[0] * l0[1] - l[1] * l0[0]];
+    angle = Math.max(angle, Math.atan2(norm(cross), l.reduce((s, x, i) => s + x * l0[i], 0)));
   }
+  // |L(t) - L(0)| / |L(0)|, the largest over t = 0.01 .. 100.
   console.log(`free_top_momentum_max ${worst.toExponential(6)}`);
+  console.log(`free_top_momentum_magnitude_max ${magnitude.toExponential(2)}`);
+  console.log(`free_top_momentum_angle_max_rad ${angle.toFixed(4)}`);
   console.log(`free_top_world_omega_after_10000 ${[b.angularVelocity.x, b.angularVelocity.y, b.angularVelocity.z].join(' ')}`);
 }
-// The body angular velocity at t = 5 against Euler's equations, as the step halves.
+// The body angular velocity at t = 5 against Euler's equations, as the step halves: the
+// relative error |w - w_exact| / |w0|, the body components.
 const exact = euler(5, 1e-4), check = euler(5, 2e-4);
 console.log(`reference_check ${norm(exact.map((x, i) => x - check[i])).toExponential(2)}`);
 for (const n of [1024, 4096, 16384]) {
