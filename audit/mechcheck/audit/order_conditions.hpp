@@ -11,7 +11,7 @@
 /// Cost and memory: the trees of order n are enumerated depth-first from the stored vectors
 /// A g(u) of the trees of order <= P - 2 (P the highest order evaluated); a tree [u] with
 /// one subtree of order P - 1 needs no stored vector, Phi([u]) = (A^T b)^T g(u). The work is
-/// about s x (number of trees) multiplications and the storage s x (trees of order <= P - 2)
+/// about s x (number of trees) multiplications (stage-trees) and the storage s x (trees of order <= P - 2)
 /// values: bench/ measures it. Beyond a budget the orders are evaluated as far as it goes,
 /// and the report says where it stopped and why.
 ///
@@ -119,11 +119,12 @@ inline const std::vector<rooted_tree>& rooted_trees(int max_order = 10) {
 }
 
 /// How far the trees may go: the values stored (s per tree of order <= P - 2) and the
-/// multiplications (about s per tree of order <= P). The defaults keep one analysis under
-/// about a gigabyte and half a minute in mpfr100 (bench/tableau_bench.cpp).
+/// stage-trees (s per tree of order <= P). Measured in mpfr100 (bench/order_conditions_bench.cpp,
+/// docs/performance.md): 1.5 us a stage-tree, 210 bytes a stored value, so the defaults keep
+/// one analysis under about 50 s and 0.9 GB.
 struct order_condition_budget {
-  std::uint64_t stored_values = std::uint64_t(1) << 23;
-  std::uint64_t work = std::uint64_t(1) << 28;
+  std::uint64_t stored_values = std::uint64_t(1) << 22;
+  std::uint64_t work = std::uint64_t(1) << 25;
 };
 
 /// The order conditions of a tableau in the real type R.
@@ -251,7 +252,7 @@ order_condition_report<R> order_conditions(const butcher_tableau<R>& t, int max_
     out.limit = "order " + std::to_string(P + 1) + " needs " + std::to_string(rooted_trees_up_to(P + 1)) +
                 " trees (" + std::to_string(stored(P + 1)) + " stored stage values, budget " +
                 std::to_string(budget.stored_values) + "; " + std::to_string(rooted_trees_up_to(P + 1) * s) +
-                " multiplications, budget " + std::to_string(budget.work) + ")";
+                " stage-trees, budget " + std::to_string(budget.work) + ")";
   out.max_order = P;
   out.residual.assign(std::size_t(P), 0.0);
   out.relative.assign(std::size_t(P), 0.0);
