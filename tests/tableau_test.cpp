@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <iterator>
 #include <regex>
 
@@ -610,6 +612,81 @@ TEST(tableau_file, stage_order_in_both_definitions) {
   const auto r = audit::analyse(audit::read_tableau(dir / "radau_iia3.json"));
   EXPECT_EQ(r.method.stage_order, 3);
   EXPECT_EQ(r.method.stage_order_bc, 3);
+}
+
+TEST(stability, known_answers_of_the_classical_tableaus) {
+  struct known {
+    const char* file;
+    bool a, l, algebraic;
+  };
+  // Hairer & Wanner II, IV.3, IV.5 and IV.12: Gauss A-stable, not L-stable, algebraically
+  // stable; Radau IIA all three; Lobatto IIIA A-stable only; Crouzeix's SDIRK A-stable, not
+  // L-stable; explicit methods none.
+  for (const known& k : {known{"gauss2", true, false, true}, known{"gauss3", true, false, true},
+                         known{"gauss5", true, false, true}, known{"radau_iia3", true, true, true},
+                         known{"lobatto_iiia3", true, false, false}, known{"rk4", false, false, false},
+                         known{"dopri5", false, false, false}}) {
+    SCOPED_TRACE(k.file);
+    const auto a = audit::analyse(audit::read_tableau(dir / (std::string(k.file) + ".json")));
+    const auto& st = a.stability;
+    ASSERT_TRUE(st.not_analysed.empty()) << st.not_analysed;
+    EXPECT_EQ(st.a_stable, k.a) << st.a_words << "\n" << st.r_text();
+    EXPECT_EQ(st.l_stable, k.l) << st.l_words;
+    EXPECT_EQ(st.algebraically_stable, k.algebraic) << st.algebraic_words;
+  }
+  const auto sdirk = audit::analyse(audit::read_tableau(dir / "sdirk3.json")).stability;
+  EXPECT_TRUE(sdirk.a_stable) << sdirk.a_words;
+  EXPECT_FALSE(sdirk.l_stable);
+  // RK4's stability function is the Taylor polynomial of exp to degree 4, exactly.
+  const auto rk4 = audit::analyse(audit::read_tableau(dir / "rk4.json")).stability;
+  EXPECT_EQ(rk4.r_text(), "(1 + z + 1/2 z^2 + 1/6 z^3 + 1/24 z^4) / (1)");
+  EXPECT_FALSE(rk4.to_precision);
+  // Gauss 2 in exact rationals? Its file is 100-digit decimals: |R(iy)| = 1 holds to the
+  // precision given, not exactly.
+  EXPECT_TRUE(audit::analyse(audit::read_tableau(dir / "gauss2.json")).stability.to_precision);
+}
+
+TEST(stability, one_stage_methods_and_their_witnesses) {
+  const auto of = [](const std::string& a, const std::string& extra = "") {
+    return audit::analyse(audit::parse_tableau(
+        R"({"A": [[")" + a + R"("]], "b": ["1"], "c": [")" + a + "\"]" + extra + "}", "theta"));
+  };
+  // Backward Euler: all three. The implicit midpoint rule: A-stable, |R(iy)| = 1 exactly.
+  const auto euler = of("1").stability;
+  EXPECT_TRUE(euler.a_stable && euler.l_stable && euler.algebraically_stable) << euler.a_words;
+  const auto midpoint = of("1/2").stability;
+  EXPECT_TRUE(midpoint.a_stable && !midpoint.l_stable && midpoint.algebraically_stable);
+  EXPECT_NE(midpoint.a_words.find("= 1 for every y"), std::string::npos) << midpoint.a_words;
+  // theta = 1/4: |R(iy)|^2 = (1 + 9y^2/16) / (1 + y^2/16) > 1 -- the witness says where.
+  const auto quarter = of("1/4").stability;
+  EXPECT_FALSE(quarter.a_stable);
+  EXPECT_NE(quarter.a_words.find("> 1 at y ="), std::string::npos) << quarter.a_words;
+  // theta = -1: a pole at z = -1, in the left half-plane.
+  const auto pole = of("-1").stability;
+  EXPECT_FALSE(pole.a_stable);
+  EXPECT_NE(pole.a_words.find("pole"), std::string::npos) << pole.a_words;
+  // Declared claims are judged like the others; --require sees them.
+  const auto declared = of("1/4", R"(, "A_stable": true, "L_stable": false, "algebraically_stable": false)");
+  EXPECT_EQ(declared.find("A-stable")->result, outcome::contradicted) << declared.find("A-stable")->evidence;
+  EXPECT_EQ(declared.find("L-stable")->result, outcome::confirmed);
+  EXPECT_EQ(declared.find("algebraically stable")->result, outcome::confirmed) << declared.find("algebraically stable")->evidence;
+  EXPECT_EQ(of("1", R"(, "A_stable": true)").find("A-stable")->result, outcome::confirmed);
+  EXPECT_EQ(of("1/2", R"(, "L_stable": false)").find("L-stable")->result, outcome::confirmed);
+}
+
+TEST(stability, the_region_is_written_as_an_svg_per_tableau) {
+  const fs::path out = fs::temp_directory_path() / ("mechcheck-stability-" + std::to_string(::getpid()));
+  const auto written = audit::write_tableau_report(
+      out.string(), {audit::analyse(audit::read_tableau(dir / "radau_iia3.json")),
+                     audit::analyse(audit::parse_tableau(R"({"name": "a/b c", "A": [["0"]], "b": ["1"], "c": ["0"]})", "x"))});
+  ASSERT_EQ(written.size(), 4u);
+  EXPECT_NE(written[2].find("radau_iia3-stability.svg"), std::string::npos);
+  EXPECT_NE(written[3].find("a_b_c-stability.svg"), std::string::npos);  // a name made a file name
+  std::ifstream in(written[2]);
+  const std::string svg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.find("<rect"), std::string::npos);
+  fs::remove_all(out);
 }
 
 }  // namespace tableau_test

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <tuple>
+#include <cctype>
 
 #include <Eigen/LU>
 #include <nlohmann/json.hpp>
@@ -29,8 +31,8 @@ coefficient_text coefficient(const json& j, const std::string& file, const std::
       fail(file, e.what());
     }
   }
-  if (j.is_number_integer()) return {mpfr100(j.get<long long>()), 0};
-  if (j.is_number_unsigned()) return {mpfr100(j.get<unsigned long long>()), 0};
+  if (j.is_number_integer()) return {mpfr100(j.get<long long>()), 0, rational(j.get<long long>())};
+  if (j.is_number_unsigned()) return {mpfr100(j.get<unsigned long long>()), 0, rational(j.get<unsigned long long>())};
   if (j.is_number_float())
     fail(file, where + " = " + j.dump() +
                    " is a JSON number with a fraction or an exponent, read through double: "
@@ -64,7 +66,7 @@ coefficient_text read_coefficient(const std::string& text, const std::string& wh
     throw tableau_error(where + " has " + std::to_string(text.size()) + " characters (at most " +
                         std::to_string(max_coefficient_length) + ": mpfr100 holds 100 digits)");
   static const std::regex decimal(R"(^[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d{1,6})?$)");
-  static const std::regex rational(R"(^([+-]?\d+)/(\d+)$)");
+  static const std::regex rational_form(R"(^([+-]?\d+)/(\d+)$)");
   std::smatch m;
   if (std::regex_match(text, m, decimal)) {
     // Significant digits: the mantissa's digits without leading zeros (trailing zeros of
@@ -73,12 +75,25 @@ coefficient_text read_coefficient(const std::string& text, const std::string& wh
     mantissa.erase(std::remove(mantissa.begin(), mantissa.end(), '.'), mantissa.end());
     const std::size_t first = mantissa.find_first_not_of('0');
     const int digits = first == std::string::npos ? 0 : static_cast<int>(mantissa.size() - first);
-    return {mpfr100(text), digits <= short_decimal_digits ? 0 : digits};
+    // The rational it writes: the mantissa's digits over 10^(digits after the point), times
+    // 10^exponent.
+    const std::string whole = m[1].str();
+    const std::size_t point = whole.find('.');
+    int scale = point == std::string::npos ? 0 : -static_cast<int>(whole.size() - point - 1);
+    if (m[3].matched) scale += std::stoi(m[3].str().substr(1));
+    if (std::abs(scale) > 400)  // the exact rational would have thousands of digits
+      throw tableau_error(where + " = \"" + text.substr(0, 80) + "\" has a decimal exponent beyond 400");
+    boost::multiprecision::cpp_int numerator(first == std::string::npos ? std::string("0") : mantissa.substr(first));
+    boost::multiprecision::cpp_int power = boost::multiprecision::pow(boost::multiprecision::cpp_int(10), std::abs(scale));
+    rational exact = scale >= 0 ? rational(numerator * power) : rational(numerator) / rational(power);
+    if (text.front() == '-') exact = -exact;
+    return {mpfr100(text), digits <= short_decimal_digits ? 0 : digits, exact};
   }
-  if (std::regex_match(text, m, rational)) {
+  if (std::regex_match(text, m, rational_form)) {
     const mpfr100 q(m[2].str());
     if (q == 0) throw tableau_error(where + " = \"" + text + "\" divides by zero");
-    return {mpfr100(m[1].str()) / q, 0};
+    return {mpfr100(m[1].str()) / q, 0,
+            rational(boost::multiprecision::cpp_int(m[1].str())) / rational(boost::multiprecision::cpp_int(m[2].str()))};
   }
   throw tableau_error(where + " = \"" + text.substr(0, 80) +
                       "\" is neither a decimal nor a rational p/q of decimal integers");
@@ -161,12 +176,23 @@ tableau_file parse_tableau(std::string_view text, const std::string& file) {
       fail(file, "A[" + std::to_string(i) + "] has " + std::to_string(a[i].size()) +
                      " entries; A has " + std::to_string(s) + " rows (A must be square)");
     std::vector<mpfr100> row;
-    for (std::size_t j = 0; j < s; ++j)
-      row.push_back(take(coefficient(a[i][j], file, "A[" + std::to_string(i) + "][" + std::to_string(j) + "]")));
+    std::vector<rational> exact_row;
+    for (std::size_t j = 0; j < s; ++j) {
+      const coefficient_text c = coefficient(a[i][j], file, "A[" + std::to_string(i) + "][" + std::to_string(j) + "]");
+      row.push_back(take(c));
+      exact_row.push_back(c.exact);
+    }
     t.tableau.a.push_back(row);
+    t.exact.a.push_back(exact_row);
   }
-  for (const auto& c : vector_of(doc, "b", s, file)) t.tableau.b.push_back(take(c));
-  for (const auto& c : vector_of(doc, "c", s, file)) t.tableau.c.push_back(take(c));
+  for (const auto& c : vector_of(doc, "b", s, file)) {
+    t.tableau.b.push_back(take(c));
+    t.exact.b.push_back(c.exact);
+  }
+  for (const auto& c : vector_of(doc, "c", s, file)) {
+    t.tableau.c.push_back(take(c));
+    t.exact.c.push_back(c.exact);
+  }
   if (doc.contains("bhat"))
     for (const auto& c : vector_of(doc, "bhat", s, file)) t.bhat.push_back(take(c));
   const auto integer = [&](const char* key) -> std::optional<int> {
@@ -186,6 +212,9 @@ tableau_file parse_tableau(std::string_view text, const std::string& file) {
   t.stage_order = integer("stage_order");
   t.symplectic = boolean("symplectic");
   t.symmetric = boolean("symmetric");
+  t.a_stable = boolean("A_stable");
+  t.l_stable = boolean("L_stable");
+  t.algebraically_stable = boolean("algebraically_stable");
   if (t.embedding_order && t.bhat.empty()) fail(file, "embedding_order is given, bhat is not");
   // The precision given: declared, or that of the longest decimal (see the header).
   if (doc.contains("precision")) {
@@ -206,7 +235,8 @@ tableau_file parse_tableau(std::string_view text, const std::string& file) {
   } else {
     t.precision_words = "exact: rationals, integers and short decimals";
   }
-  // mpfr100 holds 100 digits: more are exact to the analysis.
+  // mpfr100 holds 100 digits: more are exact to the analysis (not to exact rationals).
+  t.written_digits = digits;
   t.digits = digits >= 100 ? 0 : digits;
   t.precision = t.digits > 0 ? 5 * std::pow(10.0, -t.digits) : 0;
   return t;
@@ -380,6 +410,32 @@ tableau_analysis analyse(const tableau_file& t, int max_order) {
   a.verdicts.push_back(condition_verdict("symmetric", t.symmetric, a.method.symmetric, a.method.symmetric_relative,
                                          a.method, t.precision_words,
                                          "max |a_(s+1-i,s+1-j) + a_ij - b_j|, |b_(s+1-i) - b_i|"));
+  a.stability = stability(t.exact, t.written_digits > 0 ? 5 * std::pow(10.0, -t.written_digits) : 0.0);
+  for (const auto& [claim, declared, holds, words] :
+       {std::tuple{"A-stable", t.a_stable, a.stability.a_stable, a.stability.a_words},
+        std::tuple{"L-stable", t.l_stable, a.stability.l_stable, a.stability.l_words},
+        std::tuple{"algebraically stable", t.algebraically_stable, a.stability.algebraically_stable,
+                   a.stability.algebraic_words}}) {
+    verdict v;
+    v.claim = claim;
+    v.declared = declared ? (*declared ? "yes" : "no") : "-";
+    using outcome = verdict::outcome;
+    if (!a.stability.not_analysed.empty()) {
+      v.measured = "-";
+      v.evidence = a.stability.not_analysed;
+      v.result = declared ? outcome::not_resolvable : outcome::not_declared;
+      v.needs = "a stability analysis of this tableau: " + a.stability.not_analysed;
+    } else {
+      v.measured = holds ? "yes" : "no";
+      v.evidence = "R(z) = " + a.stability.r_text() + ": " + words +
+                   (a.stability.to_precision ? " (to the precision given: " + t.precision_words + ")" : "");
+      if (!declared) v.result = outcome::not_declared;
+      else if (*declared) v.result = holds ? (a.stability.to_precision ? outcome::to_precision_given : outcome::confirmed)
+                                           : outcome::contradicted;
+      else v.result = holds ? outcome::exceeds : outcome::confirmed;
+    }
+    a.verdicts.push_back(v);
+  }
   return a;
 }
 
@@ -434,6 +490,14 @@ std::string describe(const tableau_analysis& a) {
      << "); symplecticity condition max |b_i a_ij + b_j a_ji - b_i b_j| = "
      << sci(a.method.symplectic) << "; symmetry condition " << sci(a.method.symmetric) << " (tolerance "
      << sci(a.method.tolerance) << " at the precision given, " << sci(a.method.exact_tolerance) << " exactly)\n";
+  if (a.stability.not_analysed.empty())
+    os << "  stability: R(z) = " << a.stability.r_text() << "; A-stable " << (a.stability.a_stable ? "yes" : "no")
+       << " (" << a.stability.a_words << "); L-stable " << (a.stability.l_stable ? "yes" : "no") << " ("
+       << a.stability.l_words << "); algebraically stable " << (a.stability.algebraically_stable ? "yes" : "no")
+       << " (" << a.stability.algebraic_words << ")" << (a.stability.to_precision ? ", to the precision given" : "")
+       << "\n";
+  else
+    os << "  stability: not analysed (" << a.stability.not_analysed << ")\n";
   for (const auto& v : a.verdicts)
     if (v.result != verdict::outcome::not_declared)
       os << "  " << v.claim << ": declared " << v.declared << ", " << outcome_text(v.result) << " (" << v.evidence
@@ -467,6 +531,17 @@ std::string to_json(const tableau_analysis& a) {
   };
   json j = {{"name", a.name}, {"file", a.path}, {"stages", a.stages}, {"kind", a.kind},
             {"precision", a.precision_words}, {"method", report(a.method)}};
+  if (a.stability.not_analysed.empty())
+    j["stability"] = {{"R", a.stability.r_text()},
+                      {"A_stable", a.stability.a_stable},
+                      {"A_stable_because", a.stability.a_words},
+                      {"L_stable", a.stability.l_stable},
+                      {"L_stable_because", a.stability.l_words},
+                      {"algebraically_stable", a.stability.algebraically_stable},
+                      {"algebraically_stable_because", a.stability.algebraic_words},
+                      {"to_the_precision_given", a.stability.to_precision}};
+  else
+    j["stability"] = {{"not_analysed", a.stability.not_analysed}};
   if (a.embedding) j["embedding"] = report(*a.embedding);
   json verdicts = json::array();
   for (const auto& v : a.verdicts) verdicts.push_back(json::parse(verdict_json_text(v)));
@@ -485,14 +560,19 @@ std::string to_markdown(const tableau_analysis& a) {
     std::string why = a.failure;
     for (char& c : why)
       if (c == '|' || c == '\n') c = ' ';
-    md << "| " << a.name << " | - | FAILED: " << why << " | | | | | | |\n";
+    md << "| " << a.name << " | - | FAILED: " << why << " | | | | | | | |\n";
     return md.str();
   }
   md << "| " << a.name << " | " << a.stages << " | " << a.kind << " | " << a.precision_words << " | "
      << order_phrase(a.method) << claim("order") << " | "
      << (a.embedding ? order_phrase(*a.embedding) + claim("embedding order") : std::string("-")) << " | "
      << sci(a.method.row_sum) << " | " << a.method.stage_order << claim("stage order") << " | "
-     << sci(a.method.symplectic) << claim("symplectic") << " |\n";
+     << sci(a.method.symplectic) << claim("symplectic") << " | "
+     << (a.stability.not_analysed.empty()
+             ? std::string(a.stability.a_stable ? "A" : "-") + (a.stability.l_stable ? ", L" : "") +
+                   (a.stability.algebraically_stable ? ", algebraic" : "")
+             : std::string("not analysed"))
+     << claim("A-stable") << claim("L-stable") << claim("algebraically stable") << " |\n";
   return md.str();
 }
 
@@ -507,11 +587,24 @@ std::vector<std::string> write_tableau_report(const std::string& directory,
   for (std::size_t i = 0; i < analyses.size(); ++i) js << (i ? ",\n" : "") << to_json(analyses[i]);
   js << "]\n";
   md << "# Tableaus: order conditions in mpfr100\n\n"
-        "| tableau | stages | kind | coefficients | method | embedding | c - A 1 | stage order | symplecticity condition |\n"
-        "|---|---:|---|---|---|---|---:|---:|---:|\n";
+        "| tableau | stages | kind | coefficients | method | embedding | c - A 1 | stage order | symplecticity condition | "
+        "stability |\n"
+        "|---|---:|---|---|---|---|---:|---:|---:|---|\n";
   for (const auto& a : analyses) md << to_markdown(a);
   if (!js || !md) throw error("write_tableau_report: writing into " + directory + " failed");
-  return {json_path, md_path};
+  std::vector<std::string> written{json_path, md_path};
+  for (const auto& a : analyses) {
+    if (!a.failure.empty() || !a.stability.not_analysed.empty()) continue;
+    std::string stem = a.name;  // a file name whatever the tableau's name
+    for (char& c : stem)
+      if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.')) c = '_';
+    const std::string svg_path = (std::filesystem::path(directory) / (stem + "-stability.svg")).string();
+    std::ofstream svg(svg_path);
+    svg << stability_svg(a.stability, a.name);
+    if (!svg) throw error("write_tableau_report: cannot write " + svg_path);
+    written.push_back(svg_path);
+  }
+  return written;
 }
 
 }  // namespace mechcheck::audit

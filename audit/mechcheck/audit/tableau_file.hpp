@@ -12,6 +12,8 @@
 ///    "order": 5, "embedding_order": 4,                (optional: what is declared)
 ///    "stage_order": 1,                                (optional)
 ///    "symplectic": false, "symmetric": false,         (optional)
+///    "A_stable": true, "L_stable": false,             (optional: stability.hpp)
+///    "algebraically_stable": true,                    (optional)
 ///    "precision": "exact" | <digits>,                 (optional: see below)
 ///    "source": "where the coefficients come from"}    (optional)
 /// Every coefficient is a string: a decimal ("0.25", "-1.5e-3") read directly into 100
@@ -44,6 +46,7 @@
 
 #include "mechcheck/audit/order_conditions.hpp"
 #include "mechcheck/audit/result.hpp"
+#include "mechcheck/audit/stability.hpp"
 #include "mechcheck/core.hpp"
 
 namespace mechcheck::audit {
@@ -63,22 +66,29 @@ inline constexpr std::size_t max_tableau_bytes = std::size_t(16) << 20;
 /// Decimals with at most this many significant digits are exact (0.5, 0.25, 0.125).
 inline constexpr int short_decimal_digits = 4;
 /// The fields of a tableau file; any other is a tableau_error naming it and these.
-inline constexpr std::array<std::string_view, 12> tableau_fields{
-    "name", "source", "A", "b", "c", "bhat", "order", "embedding_order", "stage_order",
-    "symplectic", "symmetric", "precision"};
+inline constexpr std::array<std::string_view, 15> tableau_fields{
+    "name",       "source",    "A",         "b",        "c",        "bhat",     "order", "embedding_order",
+    "stage_order", "symplectic", "symmetric", "A_stable", "L_stable", "algebraically_stable", "precision"};
 
 struct tableau_file {
   std::string path;
   std::string name;
   std::string source;
   butcher_tableau<mpfr100> tableau;
+  /// The same coefficients as the rationals they write (a decimal is digits / 10^k): the
+  /// stability analysis is exact on them.
+  butcher_tableau<rational> exact;
   std::vector<mpfr100> bhat;  ///< empty: no embedding
   std::optional<int> order, embedding_order, stage_order;
   std::optional<bool> symplectic, symmetric;
+  std::optional<bool> a_stable, l_stable, algebraically_stable;  ///< "A_stable", ...: stability.hpp
   /// The significant digits the coefficients are given to (0: exact), and its relative
   /// rounding 5 10^-digits (0 when exact).
   int digits = 0;
   double precision = 0;
+  /// The digits of the longest decimal as written (or as declared), even past mpfr100's
+  /// 100: the exact rationals of `exact` hold the method to 5 10^-written_digits.
+  int written_digits = 0;
   /// "exact: rationals, integers and short decimals", "40 significant digits, its longest decimal".
   std::string precision_words = "exact";
 };
@@ -88,6 +98,7 @@ struct tableau_file {
 struct coefficient_text {
   mpfr100 value;
   int digits = 0;
+  rational exact;  ///< the rational the text writes
 };
 
 /// Reads and validates a tableau file. Throws tableau_error.
@@ -125,6 +136,8 @@ struct tableau_analysis {
   /// Every declared claim judged algebraically (order, embedding order, stage order,
   /// symplectic, symmetric), in the audit's vocabulary.
   std::vector<verdict> verdicts;
+  /// R(z), A-, L- and algebraic stability (stability.hpp), on the coefficients as written.
+  stability_report stability;
   const verdict* find(const std::string& claim) const {
     for (const auto& v : verdicts)
       if (v.claim == claim) return &v;
@@ -160,8 +173,9 @@ std::string describe(const tableau_analysis& a);
 std::string to_json(const tableau_analysis& a);
 std::string to_markdown(const tableau_analysis& a);
 
-/// Writes tableaus.json (an array of to_json) and tableaus.md (a table of to_markdown)
-/// into `directory`; returns the paths written. Throws error when a file cannot be written.
+/// Writes tableaus.json (an array of to_json), tableaus.md (a table of to_markdown) and
+/// each tableau's stability region, <name>-stability.svg, into `directory`; returns the
+/// paths written. Throws error when a file cannot be written.
 std::vector<std::string> write_tableau_report(const std::string& directory,
                                               const std::vector<tableau_analysis>& analyses);
 

@@ -1,0 +1,62 @@
+#pragma once
+/// The linear stability of a Runge-Kutta tableau (Hairer & Wanner II, IV.3 and IV.12), in
+/// exact rational arithmetic on the coefficients as written in the file (a decimal is the
+/// rational it writes), with the coefficients' precision where they are decimals:
+///
+///   R(z) = P(z) / Q(z),  P(z) = det(I - z (A - 1 b^T)),  Q(z) = det(I - z A)
+///     (y_(n+1) = R(h lambda) y_n on y' = lambda y; the determinants by Faddeev-LeVerrier);
+///   A-stable: R has no pole with Re z <= 0 (Q(-z) is Hurwitz: Routh's array) and
+///     |R(iy)| <= 1 for every real y, i.e. E(y) = |Q(iy)|^2 - |P(iy)|^2 >= 0: E is even,
+///     e(x) = E(sqrt x) a polynomial, decided on (0, inf) by Sturm sequences (its real roots
+///     isolated with rational endpoints, its sign taken between them); deg P > deg Q is
+///     unbounded at infinity, never A-stable;
+///   L-stable: A-stable and deg P < deg Q (R(inf) = 0);
+///   algebraically stable: b_i >= 0 and M = B A + A^T B - b b^T positive semidefinite
+///     (symmetric elimination with rationals).
+/// Coefficients given to a relative precision delta (decimals): a coefficient of P, Q or e
+/// within what such coefficients can move it (to first order: k delta times the elementary
+/// symmetric function e_k of A's row sums of absolute values, a bound on the sizes of the
+/// products summed in a k-th coefficient, and their products in e) is zero, and so is an
+/// entry of M within 4 s delta of M's largest product |b_i b_j| at each elimination step: a
+/// condition that holds exactly for the method holds to that size for its rounded
+/// coefficients. Exact coefficients (rationals, short decimals) are decided exactly. Implicit tableaus of more than 16 stages are not
+/// analysed (the rationals of their determinants grow past use), and say so.
+
+#include <complex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <boost/multiprecision/cpp_int.hpp>
+
+#include "mechcheck/integrators/runge_kutta.hpp"
+
+namespace mechcheck::audit {
+
+using rational = boost::multiprecision::cpp_rational;
+
+/// The stability of a tableau.
+struct stability_report {
+  std::string not_analysed;        ///< non-empty: why nothing below was computed
+  std::vector<rational> p, q;      ///< R = P/Q, coefficients of z^0, z^1, ...
+  bool a_stable = false, l_stable = false, algebraically_stable = false;
+  /// Why each holds or not: "a pole at Re z <= 0", "|R(iy)| = 1.08 at y = 2.5", ...
+  std::string a_words, l_words, algebraic_words;
+  /// Decided only to the coefficients' precision (a coefficient or entry set to zero there).
+  bool to_precision = false;
+
+  /// R(z) in double, for plots.
+  std::complex<double> r(std::complex<double> z) const;
+  /// "(1 + z/2 + z^2/12) / (1 - z/2 + z^2/12)", coefficients as rationals or decimals.
+  std::string r_text() const;
+};
+
+/// The stability of (A, b) in rationals, for coefficients given to the relative `precision`
+/// (0: exact).
+stability_report stability(const butcher_tableau<rational>& t, double precision);
+
+/// An SVG of the region |R(z)| <= 1 in the box [-re, re/2] x [-im, im] (re, im chosen to
+/// show the region: 12 by default), the axes and the imaginary axis marked.
+std::string stability_svg(const stability_report& s, const std::string& title);
+
+}  // namespace mechcheck::audit
