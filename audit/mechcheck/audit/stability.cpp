@@ -1,5 +1,7 @@
 #include "mechcheck/audit/stability.hpp"
 
+#include "mechcheck/core.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -200,7 +202,8 @@ std::pair<bool, std::optional<rational>> nonnegative_on_positive_axis(poly e) {
   for (const auto& c : f) bound += abs(c / f.back());
   std::vector<std::pair<rational, rational>> work{{rational(0), bound}}, isolated;
   const auto count = [&](const rational& lo, const rational& hi) { return variations(seq, lo) - variations(seq, hi); };
-  for (int guard = 0; !work.empty() && guard < 100000; ++guard) {
+  int guard = 0;
+  for (; !work.empty() && guard < 4096; ++guard) {
     const auto [lo, hi] = work.back();
     work.pop_back();
     const int n = count(lo, hi);
@@ -214,6 +217,7 @@ std::pair<bool, std::optional<rational>> nonnegative_on_positive_axis(poly e) {
     work.push_back({lo, mid});
     work.push_back({mid, hi});
   }
+  if (!work.empty()) throw domain_error("stability: the roots of E were not isolated in 4096 bisections");
   std::vector<rational> samples{bound};
   for (const auto& [lo, hi] : isolated) {
     if (lo > 0) samples.push_back(lo);
@@ -280,11 +284,43 @@ stability_report stability(const butcher_tableau<rational>& t, double precision)
     out.not_analysed = "an implicit tableau of " + std::to_string(s) + " stages (at most 16 are analysed)";
     return out;
   }
+  // The rationals' sizes bound the work: 100-digit decimals are 333 bits each.
+  std::size_t bits = 0;
+  const auto size_of = [](const rational& x) {
+    const auto n = boost::multiprecision::numerator(x), d = boost::multiprecision::denominator(x);
+    return (n == 0 ? 0 : boost::multiprecision::msb(abs(n)) + 1) + boost::multiprecision::msb(d) + 1;
+  };
+  for (std::size_t i = 0; i < s; ++i) {
+    bits += size_of(t.b[i]);
+    for (std::size_t j = 0; j < s; ++j) bits += size_of(t.a[i][j]);
+  }
+  if (implicit && bits > max_stability_bits) {
+    out.not_analysed = "coefficients of " + std::to_string(bits) + " bits in all (an implicit tableau is analysed in " +
+                       "exact rationals up to " + std::to_string(max_stability_bits) + ")";
+    return out;
+  }
   matrix a = t.a, m = t.a;
   for (std::size_t i = 0; i < s; ++i)
     for (std::size_t j = 0; j < s; ++j) m[i][j] -= t.b[j];  // A - 1 b^T
-  out.q = det_one_minus_z(a);
-  out.p = det_one_minus_z(m);
+  if (implicit) {
+    out.q = det_one_minus_z(a);
+    out.p = det_one_minus_z(m);
+  } else {  // Q = 1 and P(z) = 1 + sum_k b^T A^(k-1) 1 z^k: s products of A with a vector
+    out.q = {rational(1)};
+    out.p = {rational(1)};
+    std::vector<rational> v(s, rational(1));
+    for (std::size_t k = 1; k <= s; ++k) {
+      rational c = 0;
+      for (std::size_t i = 0; i < s; ++i) c += t.b[i] * v[i];
+      out.p.push_back(c);
+      std::vector<rational> next(s, rational(0));
+      for (std::size_t i = 0; i < s; ++i)
+        for (std::size_t j = 0; j < i; ++j)
+          if (t.a[i][j] != 0) next[i] += t.a[i][j] * v[j];
+      v = std::move(next);
+    }
+    trim(out.p);
+  }
   // What coefficients off by a relative `precision` can move: q_k is a sum of products of k
   // entries of A (principal minors), each moved by at most k precision times its size, and
   // the sum of their sizes is at most e_k(r), the elementary symmetric function of the row
@@ -369,7 +405,14 @@ stability_report stability(const butcher_tableau<rational>& t, double precision)
           }
       }
       trim(ex);
-      const auto [holds, witness] = nonnegative_on_positive_axis(ex);
+      std::pair<bool, std::optional<rational>> decided;
+      try {
+        decided = nonnegative_on_positive_axis(ex);
+      } catch (const domain_error& e) {
+        out.not_analysed = e.what();
+        return out;
+      }
+      const auto [holds, witness] = decided;
       out.a_stable = holds;
       if (holds) {
         out.a_words = ex.empty() ? "no pole with Re z <= 0; |R(iy)| = 1 for every y"

@@ -35,6 +35,10 @@ namespace mechcheck::audit {
 
 using rational = boost::multiprecision::cpp_rational;
 
+/// The largest implicit tableau analysed, in bits of its coefficients' rationals (A and b,
+/// numerators and denominators): 16 stages of 100-digit decimals hold 90 000.
+inline constexpr std::size_t max_stability_bits = 100000;
+
 /// The stability of a tableau.
 struct stability_report {
   std::string not_analysed;        ///< non-empty: why nothing below was computed
