@@ -140,11 +140,11 @@ struct claims {
   /// "symmetric"; tableau_file.hpp's add_algebraic_claims), each a verdict of exact
   /// arithmetic at the precision the coefficients are given to.
   std::vector<verdict> algebraic;
-  /// The stepper *is* that tableau (mechcheck's Runge-Kutta stepper with these
-  /// coefficients): where the algebra decides a claim, its verdict stands and the
-  /// measurement is quoted beside it (with why it did not resolve the question where the
-  /// two differ). A library's own implementation of a table keeps its measured verdicts;
-  /// the algebra is quoted.
+  /// The stepper *is* a tableau file's tableau (tableau_file_steppers): where the algebra
+  /// decides a claim, its verdict stands and the measurement is quoted beside it (with why
+  /// it did not resolve the question where the two differ). A library's table (ARKODE's,
+  /// run by the library or through mechcheck's stepper) keeps its measured verdicts, the
+  /// algebra quoted: a finding about it needs a reproducer against the library.
   bool algebra_decides = false;
 };
 

@@ -24,8 +24,6 @@ stepper_under_audit<T> tableau_stepper(std::string name, const butcher_tableau<R
   s.name = std::move(name);
   s.origin = std::move(origin);
   s.declared = declared;
-  // The stepper is the tableau: what its algebra decides, it decides (verdicts.hpp).
-  s.declared.algebra_decides = !declared.algebraic.empty();
   s.make = [t](const erased_system<T>& system) -> step_function<T> {
     auto m = std::make_shared<runge_kutta<erased_system<T>, dynamic_vector<T>>>(system, *t);
     return [m](state<T>& x, const T& h) { (*m)(x, h); };
@@ -57,6 +55,8 @@ std::vector<stepper_under_audit<T>> tableau_file_steppers(const tableau_file& f)
       c.symmetric = f.symmetric;
     }
     add_algebraic_claims(c, order_conditions(t, orders_to_evaluate(f), f.precision), f.precision_words);
+    // The stepper is the file's tableau: what its algebra decides, it decides (verdicts.hpp).
+    c.algebra_decides = true;
     out.push_back(tableau_stepper<T>("tableau::" + f.name + (embedding ? "/embedding" : ""), t, c,
                                      f.path + (f.source.empty() ? "" : " (" + f.source + ")") +
                                          (embedding ? ", its embedding bhat" : "")));
