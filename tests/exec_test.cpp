@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <tuple>
 
 #include "mechcheck/audit/black_box.hpp"
 #include "mechcheck/audit/drivers.hpp"
@@ -340,6 +341,29 @@ TEST(exec, the_protocol_refuses_deep_large_and_malformed_lines_with_their_reason
   EXPECT_NE(refused([] { ep::parse_handshake(R"({"protocol": "mechcheck", "version": 1, "kind": "engine", "name": "x"})", "engine"); })
                 .find("lists its \"integrators\""),
             std::string::npos);
+  // A field version 1 does not have -- a misspelt claim, structure or integrator field, a
+  // stepper's "integrators" -- is an error naming it and the fields there are.
+  for (const auto& [line, kind, words] :
+       {std::tuple{R"({"protocol": "mechcheck", "version": 1, "kind": "stepper", "name": "x", "claims": {"symplectc": true}})",
+                   "stepper", "the field \"symplectc\" is not one of version 1's (order, symplectic, symmetric)"},
+        std::tuple{R"({"protocol": "mechcheck", "version": 1, "kind": "stepper", "name": "x", "claim": {"order": 2}})",
+                   "stepper", "the field \"claim\""},
+        std::tuple{R"({"protocol": "mechcheck", "version": 1, "kind": "stepper", "name": "x", "structure": {"separble": true}})",
+                   "stepper", "structure: the field \"separble\""},
+        std::tuple{R"({"protocol": "mechcheck", "version": 1, "kind": "driver", "name": "x", "integrators": []})", "driver",
+                   "the field \"integrators\""},
+        std::tuple{R"({"protocol": "mechcheck", "version": 1, "kind": "engine", "name": "x", "integrators": [{"name": "a", "order": 2}]})",
+                   "engine", "integrator a: the field \"order\""}}) {
+    const std::string text = line, as = kind;  // a lambda captures variables, not bindings (Clang 14)
+    const std::string what = refused([&] { ep::parse_handshake(text, as); });
+    EXPECT_NE(what.find(words), std::string::npos) << what;
+  }
+  EXPECT_EQ(ep::parse_handshake(R"({"protocol": "mechcheck", "version": 1, "kind": "stepper", "name": "x", "origin": "o",)"
+                                R"( "claims": {"order": 2, "symplectic": true, "symmetric": true}, "numbers": "decimal",)"
+                                R"( "structure": {"canonical": true, "separable": true}})",
+                                "stepper")
+                .declared.order,
+            2);
   const auto scenarios = audit::scenarios();
   const audit::scenario& pendulum = *std::find_if(scenarios.begin(), scenarios.end(),
                                                  [](const audit::scenario& s) { return s.name == "pendulum_small"; });

@@ -179,12 +179,25 @@ void ignore_sigpipe() {
   static_cast<void>(done);
 }
 
+/// A field of `object` that version 1 of the protocol does not have is an error naming it
+/// and the fields it has (a misspelt claim would otherwise be dropped without a word).
+void only_known_fields(const json& object, std::initializer_list<const char*> known, const std::string& what) {
+  for (const auto& [key, value] : object.items()) {
+    if (std::any_of(known.begin(), known.end(), [&](const char* k) { return key == k; })) continue;
+    std::string names;
+    for (const char* k : known) names += (names.empty() ? "" : ", ") + std::string(k);
+    throw exec_error(what + ": the field \"" + key.substr(0, 64) + "\" is not one of version " +
+                     std::to_string(protocol_version) + "'s (" + names + ")");
+  }
+}
+
 /// The claims of a handshake or of one of its integrators.
 claims claims_of(const json& object, const std::string& what) {
   claims out;
   const auto it = object.find("claims");
   if (it == object.end()) return out;
   if (!it->is_object()) throw exec_error(what + ": \"claims\" must be an object");
+  only_known_fields(*it, {"order", "symplectic", "symmetric"}, what + ": claims");
   if (const auto o = it->find("order"); o != it->end()) {
     if (!o->is_number_integer() || o->get<long long>() < 1 || o->get<long long>() > 64)
       throw exec_error(what + ": claims.order must be an integer from 1 to 64, got " + excerpt_json(*o));
@@ -213,12 +226,19 @@ exec_protocol::handshake_fields handshake_of(const json& h, std::string_view kin
   if (field("kind") != kind)
     throw exec_error(what + ": kind " + excerpt_json(field("kind")) + "; --exec-" + std::string(kind) + " runs a \"" +
                      std::string(kind) + "\"");
+  if (kind == "engine")
+    only_known_fields(h, {"protocol", "version", "kind", "name", "origin", "claims", "structure", "numbers", "shapes",
+                          "integrators"},
+                      what);
+  else
+    only_known_fields(h, {"protocol", "version", "kind", "name", "origin", "claims", "structure", "numbers"}, what);
   exec_protocol::handshake_fields out;
   out.name = name_of(h, "name", what);
   out.origin = text_of(h, "origin", what, false);
   out.declared = claims_of(h, what);
   if (const auto it = h.find("structure"); it != h.end()) {
     if (!it->is_object()) throw exec_error(what + ": \"structure\" must be an object");
+    only_known_fields(*it, {"canonical", "separable"}, what + ": structure");
     for (const char* key : {"canonical", "separable"})
       if (const auto v = it->find(key); v != it->end()) {
         if (!v->is_boolean()) throw exec_error(what + ": structure." + key + " must be true or false");
@@ -242,6 +262,7 @@ exec_protocol::handshake_fields handshake_of(const json& h, std::string_view kin
       if (!i.is_object()) throw exec_error(what + ": an integrator is not an object: " + excerpt_json(i));
       exec_protocol::integrator_fields f;
       f.name = name_of(i, "name", what + ": an integrator");
+      only_known_fields(i, {"name", "origin", "claims"}, what + ": integrator " + f.name);
       f.origin = text_of(i, "origin", what + ": integrator " + f.name, false);
       f.declared = claims_of(i, what + ": integrator " + f.name);
       for (const auto& g : out.integrators)
