@@ -182,7 +182,8 @@ void ignore_sigpipe() {
 /// A field of `object` that version 1 of the protocol does not have is an error naming it
 /// and the fields it has (a misspelt claim would otherwise be dropped without a word).
 void only_known_fields(const json& object, std::initializer_list<const char*> known, const std::string& what) {
-  for (const auto& [key, value] : object.items()) {
+  for (auto field = object.begin(); field != object.end(); ++field) {
+    const std::string& key = field.key();  // a variable, not a binding: the lambda captures it (Clang 14)
     if (std::any_of(known.begin(), known.end(), [&](const char* k) { return key == k; })) continue;
     std::string names;
     for (const char* k : known) names += (names.empty() ? "" : ", ") + std::string(k);
