@@ -285,18 +285,24 @@ stability_report stability(const butcher_tableau<rational>& t, double precision)
     return out;
   }
   // The rationals' sizes bound the work: 100-digit decimals are 333 bits each.
-  std::size_t bits = 0;
+  std::size_t bits = 0, largest_bits = 0;
   const auto size_of = [](const rational& x) {
     const auto n = boost::multiprecision::numerator(x), d = boost::multiprecision::denominator(x);
-    return (n == 0 ? 0 : boost::multiprecision::msb(abs(n)) + 1) + boost::multiprecision::msb(d) + 1;
+    return std::size_t((n == 0 ? 0 : boost::multiprecision::msb(abs(n)) + 1) + boost::multiprecision::msb(d) + 1);
   };
   for (std::size_t i = 0; i < s; ++i) {
     bits += size_of(t.b[i]);
-    for (std::size_t j = 0; j < s; ++j) bits += size_of(t.a[i][j]);
+    largest_bits = std::max(largest_bits, size_of(t.b[i]));
+    for (std::size_t j = 0; j < s; ++j) {
+      bits += size_of(t.a[i][j]);
+      largest_bits = std::max(largest_bits, size_of(t.a[i][j]));
+    }
   }
-  if (implicit && bits > max_stability_bits) {
-    out.not_analysed = "coefficients of " + std::to_string(bits) + " bits in all (an implicit tableau is analysed in " +
-                       "exact rationals up to " + std::to_string(max_stability_bits) + ")";
+  if (implicit && (bits > max_stability_bits || largest_bits > max_stability_coefficient_bits)) {
+    out.not_analysed = "coefficients of " + std::to_string(bits) + " bits in all, the largest " +
+                       std::to_string(largest_bits) + " (an implicit tableau is analysed in exact rationals up to " +
+                       std::to_string(max_stability_bits) + " bits, " + std::to_string(max_stability_coefficient_bits) +
+                       " a coefficient)";
     return out;
   }
   matrix a = t.a, m = t.a;

@@ -36,8 +36,12 @@ namespace mechcheck::audit {
 using rational = boost::multiprecision::cpp_rational;
 
 /// The largest implicit tableau analysed, in bits of its coefficients' rationals (A and b,
-/// numerators and denominators): 16 stages of 100-digit decimals hold 90 000.
-inline constexpr std::size_t max_stability_bits = 100000;
+/// numerators and denominators), and the largest coefficient: a 100-digit decimal holds 666
+/// bits, 5 stages of them 20 000; past these the rationals of the determinants grow too
+/// fast (8 stages of random 100-digit decimals took 2 s, 8 stages of decimals with exponents
+/// near 350 took 40 s).
+inline constexpr std::size_t max_stability_bits = 24000;
+inline constexpr std::size_t max_stability_coefficient_bits = 700;
 
 /// The stability of a tableau.
 struct stability_report {
