@@ -92,8 +92,15 @@ coefficient_text read_coefficient(const std::string& text, const std::string& wh
   if (std::regex_match(text, m, rational_form)) {
     const mpfr100 q(m[2].str());
     if (q == 0) throw tableau_error(where + " = \"" + text + "\" divides by zero");
-    return {mpfr100(m[1].str()) / q, 0,
-            rational(boost::multiprecision::cpp_int(m[1].str())) / rational(boost::multiprecision::cpp_int(m[2].str()))};
+    // cpp_int reads a leading 0 as octal: the decimal digits without their leading zeros.
+    const auto integer = [](std::string digits) {
+      const bool negative = !digits.empty() && digits[0] == '-';
+      if (!digits.empty() && (digits[0] == '-' || digits[0] == '+')) digits.erase(0, 1);
+      const std::size_t first = digits.find_first_not_of('0');
+      boost::multiprecision::cpp_int v(first == std::string::npos ? std::string("0") : digits.substr(first));
+      return negative ? boost::multiprecision::cpp_int(-v) : v;
+    };
+    return {mpfr100(m[1].str()) / q, 0, rational(integer(m[1].str())) / rational(integer(m[2].str()))};
   }
   throw tableau_error(where + " = \"" + text.substr(0, 80) +
                       "\" is neither a decimal nor a rational p/q of decimal integers");
