@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <map>
 #include <optional>
 #include <random>
@@ -266,6 +267,48 @@ TEST(audit_growth, powers_of_t_give_their_exponent_and_class) {
   EXPECT_EQ(audit::growth_kind(0.75), "linear drift");
   EXPECT_EQ(audit::growth_kind(1.4999), "linear drift");
   EXPECT_EQ(audit::growth_kind(1.5), "faster than linear");
+}
+
+TEST(audit_growth, a_transient_is_not_growth_and_a_short_run_is_not_resolvable) {
+  // Windows of 10^5 steps of 0.01 (t = 1000), time scale 10, floor 64 eps sqrt(n) (1.4e-14
+  // to 4.5e-12): each rule against its known answer.
+  const double h = 0.01, scale = 10, t_end = 1000;
+  std::vector<double> time, floor;
+  for (int w = 0; w <= 16; ++w) {
+    const double n = std::min(1.5 * std::ldexp(1.0, w), 0.5 * (std::ldexp(1.0, w) + 1e5));
+    time.push_back(n * h);
+    floor.push_back(64 * 2.220446049250313e-16 * std::sqrt(n));
+  }
+  const auto run_to = [&](const std::function<double(double)>& rms, double end) {
+    std::vector<double> r;
+    for (const double t : time) r.push_back(rms(t));
+    return audit::classify_growth(time, r, floor, scale, end);
+  };
+  const auto classify = [&](const std::function<double(double)>& rms) { return run_to(rms, t_end); };
+  // At rounding until t = 8, then a plateau (the near-axis body's jump): bounded. Without
+  // the rules, the fit over every window reads t^2.
+  const auto jump = classify([](double t) { return t < 8 ? 1e-15 : 2e-7; });
+  EXPECT_EQ(jump.kind, "bounded");
+  ASSERT_TRUE(jump.exponent);
+  EXPECT_LT(std::abs(*jump.exponent), 1e-12);
+  // A jump after the time scale, then flat over the last decade: bounded by the plateau rule.
+  EXPECT_EQ(classify([](double t) { return t < 40 ? 1e-9 : 1e-7; }).kind, "bounded");
+  // A drift that starts from the floor at t = 100, and one after a transient above the floor
+  // before one time scale: both linear (a fit over the floor or the transient is not).
+  EXPECT_EQ(classify([](double t) { return t < 100 ? 1e-16 : 1e-9 * t; }).kind, "linear drift");
+  EXPECT_EQ(classify([](double t) { return t < 10 ? 1e-6 : 1e-9 * t; }).kind, "linear drift");
+  // A drift, a walk, and growth after a plateau: their classes.
+  EXPECT_EQ(classify([](double t) { return 1e-9 * t; }).kind, "linear drift");
+  EXPECT_EQ(classify([](double t) { return 1e-9 * std::sqrt(t); }).kind, "random walk");
+  EXPECT_EQ(classify([](double t) { return 1e-12 * t * t; }).kind, "faster than linear");
+  EXPECT_NE(classify([](double t) { return t < 100 ? 1e-7 : 1e-7 * (t / 100) * (t / 100); }).kind, "bounded");
+  // At the floor past one time scale: bounded; two windows above it only: not resolvable.
+  EXPECT_EQ(classify([](double t) { return t < 5 ? 1e-9 : 1e-16; }).kind, "bounded");
+  EXPECT_EQ(classify([](double t) { return t > 200 && t < 600 ? 1e-9 : 1e-16; }).kind.rfind("not resolvable: 2 windows", 0), 0u);
+  // A run of under ten time scales: not resolvable, whatever the windows hold.
+  const auto short_run = run_to([](double t) { return 1e-9 * t; }, 99);
+  EXPECT_EQ(short_run.kind, "not resolvable: the run reaches t = 99, under ten of the scenario's time scale 10");
+  EXPECT_FALSE(short_run.exponent);
 }
 
 TEST(audit_growth, a_random_walk_has_increments_growing_as_the_root_of_the_lag) {

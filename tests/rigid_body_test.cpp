@@ -104,6 +104,22 @@ TEST(top_errors, asymmetric_reference) {
             "asymmetric_top_angular_velocity: M^2 = 2 E I2 (the separatrix)");
 }
 
+// The period: Omega(T) = Omega(0) to rounding, and at T / 2 Omega_1 and Omega_2 have turned
+// sign (cn(2K) = -1, sn(2K) = 0 from sn = 0), for both sides of the separatrix (M^2 > 2 E I2
+// about axis 3, M^2 < 2 E I2 about axis 1 after the exchange).
+TEST(top_reference, period) {
+  const V moments(1, 2, 3);
+  for (const V& omega0 : {V(0.3, 0, 0.5), V(1, 0, 0.2), V(0.01, 1, 0.01)}) {
+    const double t = reference::asymmetric_top_period(moments, omega0);
+    const V back = reference::asymmetric_top_angular_velocity(moments, omega0, t);
+    const V half = reference::asymmetric_top_angular_velocity(moments, omega0, t / 2);
+    const double tol = 64 * std::numeric_limits<double>::epsilon() * omega0.norm() * (1 + t);
+    EXPECT_LT((back - omega0).norm(), tol) << omega0.transpose() << " T = " << t;
+    EXPECT_GT((half - omega0).norm(), 0.1 * omega0.norm()) << omega0.transpose();
+  }
+  EXPECT_THROW(reference::asymmetric_top_period(V(1, 1, 1.5), V(1, 1, 1)), domain_error);
+}
+
 // Boost.Math's jacobi_elliptic returns a wrong dn at the quarter period; the reference
 // takes dn from sn. Omega(0) with Omega_1 = 0 puts the phase exactly there.
 TEST(top_reference, quarter_period_phase) {

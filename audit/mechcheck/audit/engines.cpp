@@ -66,6 +66,7 @@ scenario free_top(scenario_kind kind, std::string name, Eigen::Vector3d omega0, 
   s.exact = [in, omega0](double t) -> Eigen::VectorXd {
     return to_double(reference::asymmetric_top_angular_velocity(to_mp(in), to_mp(omega0), mpfr50(t)));
   };
+  s.time_scale = static_cast<double>(reference::asymmetric_top_period(to_mp(in), to_mp(omega0)));
   return s;
 }
 
@@ -84,11 +85,12 @@ scenario gazebo_boxes() {
   s.omega0 = {1e-3, 1.5, 1.5e-2};
   s.description = "the box of gazebo-classic's RigidBodyTest.Boxes benchmark (0.1 x 0.4 x 0.9, 10 kg, angular "
                   "velocity (1e-3, 1.5, 1.5e-2) about its intermediate axis), no gravity: body angular velocity "
-                  "against the Jacobi elliptic solution; its long run is 10^5 steps of 1e-4, the benchmark's "
-                  "smallest step over its 10 s";
+                  "against the Jacobi elliptic solution; its long run is 10^5 steps of 2.5e-3, twelve periods "
+                  "of the flip (the benchmark's 10 s is half of one: too short to tell a bounded energy "
+                  "error from a growing one)";
   s.t_end = 10;
   s.steps0 = 64;
-  s.h_long = 1e-4;
+  s.h_long = 2.5e-3;
   s.momentum = scenario::momentum_law::vector;
   s.scale = s.omega0.norm();
   s.classes = {{"angular velocity", 0, 3}};
@@ -98,6 +100,7 @@ scenario gazebo_boxes() {
     const Eigen::Vector3d w = to_double(reference::asymmetric_top_angular_velocity(to_mp(in), to_mp(w0), mpfr50(t)));
     return Eigen::Vector3d(-w(2), w(1), w(0));
   };
+  s.time_scale = static_cast<double>(reference::asymmetric_top_period(to_mp(in), to_mp(w0)));  // 20.6
   return s;
 }
 
@@ -119,6 +122,12 @@ scenario free_symmetric_top() {
   s.scale = 1;
   s.classes = {{"angular velocity", 0, 3}, {"orientation", 3, 3}};
   const Eigen::Vector3d in = s.inertia, w0 = s.omega0;
+  {  // the slower of Omega's turn in the body, 2 pi I1 / ((I3 - I1) Omega_3), and x3's
+     // about M, 2 pi I1 / |M|: 2 pi
+    const double pi = boost::math::constants::pi<double>();
+    s.time_scale = std::max(2 * pi * in(0) / std::abs((in(2) - in(0)) * w0(2)),
+                            2 * pi * in(0) / in.cwiseProduct(w0).norm());
+  }
   s.exact = [in, w0](double time) -> Eigen::VectorXd {
     using std::cos;
     using std::sin;
@@ -180,6 +189,7 @@ scenario heavy_top_precession() {
                   "0.05, 0.1) about it, g = 9.81, axis 0.5 rad from the vertical, spin Omega_3 = 40: steady "
                   "precession at phidot = " + to_text(static_cast<double>(phidot)) +
                   " (the slow root of eq 232): the axis and omega / |omega(0)| against it";
+  s.time_scale = static_cast<double>(2 * boost::math::constants::pi<mpfr50>() / phidot);  // the precession
   const mpfr50 psidot = mpfr50(spin) - phidot * cos(mpfr50(theta));
   const double w_scale = s.omega0.norm();
   s.exact = [phidot, psidot, theta, w_scale](double time) -> Eigen::VectorXd {
@@ -202,6 +212,7 @@ scenario heavy_top_nutation() {
   scenario s = top_on_a_point(scenario_kind::heavy_top_nutation, "heavy_top_nutation", theta, 0, spin);
   const nutation<mpfr50> n = library_top(s).nutation_from_turning_point(mpfr50(theta), mpfr50(0), mpfr50(spin));
   s.t_end = static_cast<double>(n.period);
+  s.time_scale = s.t_end;  // the nutation's period
   s.steps0 = 32;
   s.description = "the same top released at 0.5 rad with phidot = 0 (spin 40): it nutates between cos theta = " +
                   to_text(static_cast<double>(n.u_low)) + " and " + to_text(static_cast<double>(n.u_high)) +
@@ -239,6 +250,7 @@ scenario pendulum(scenario_kind kind, std::string name, double theta0) {
   s.steps0 = 32;
   s.h_long = 0.01;
   s.scale = std::abs(theta0) * std::sqrt(1 + w02);
+  s.time_scale = static_cast<double>(motion.period());
   s.classes = {{"joint coordinates", 0, 2}};
   s.exact = [motion](double t) {
     const auto [theta, p] = motion.state_at(mpfr50(t));
@@ -260,6 +272,7 @@ scenario projectile() {
   p.t_end = 1;
   p.steps0 = 16;
   p.h_long = 1e-4;  // 10 s over the long run (it falls 490 m)
+  p.time_scale = p.t_end;  // a uniform field has no period: the order study's span
   p.scale = p.velocity0.norm();
   p.classes = {{"position", 0, 3}, {"velocity", 3, 3}};
   const Eigen::Vector3d v0 = p.velocity0;
@@ -288,6 +301,7 @@ scenario kepler() {
   s.t_end = 5;
   s.steps0 = 64;
   s.h_long = 0.01;
+  s.time_scale = 2 * boost::math::constants::pi<double>();  // the orbit's period, a^(3/2) 2 pi / sqrt(k)
   s.momentum = scenario::momentum_law::vector;
   s.scale = 1;
   s.classes = {{"position", 0, 3}, {"velocity", 3, 3}};
@@ -365,6 +379,7 @@ scenario chain(scenario_kind kind, std::string name, double m, double l, const s
   s.structure = body_structure::chain;
   s.gravity = 9.81;
   s.t_end = t_end;
+  s.time_scale = t_end;  // no single period (the chain's motion is not periodic): the order study's span
   s.steps0 = steps0;
   s.h_long = 0.01;
   planar_chain model;
@@ -435,6 +450,7 @@ scenario four_bar_scenario() {
   s.structure = body_structure::chain;
   s.gravity = 9.81;
   s.t_end = 2;
+  s.time_scale = s.t_end;  // the order study's span, near the linkage's swing
   s.steps0 = 32;
   s.h_long = 0.01;
   four_bar model;
@@ -494,6 +510,7 @@ scenario three_body() {
   s.structure = body_structure::free_bodies;
   s.gravitation = 1;
   s.t_end = 2;
+  s.time_scale = 6.3259;  // the choreography's period (these initial conditions return after it)
   s.steps0 = 32;
   s.h_long = 0.01;
   s.momentum = scenario::momentum_law::vector;
@@ -799,6 +816,22 @@ void order_of(const engine_integrator& in, const scenario& s, const engine_optio
   for (const auto& c : s.classes) a.classes.emplace_back(c.name, study(c.first, c.count));
 }
 
+/// The rounding budget of an engine's relative invariant after n steps of unknown
+/// arithmetic: 64 eps a step as a random walk.
+double engine_rounding_budget(double n) { return 64 * eps * std::sqrt(std::max(n, 1.0)); }
+
+/// The growth class of a long run's relative error (classify_growth) with the scenario's
+/// time scale and the engine's rounding budget as the floor of each window.
+growth_class growth_of(const growth_recorder& g, const scenario& s, long long steps) {
+  const std::vector<double> steps_w = g.window_steps();
+  std::vector<double> time(steps_w.size()), floor(steps_w.size());
+  for (std::size_t w = 0; w < steps_w.size(); ++w) {
+    time[w] = steps_w[w] * s.h_long;
+    floor[w] = engine_rounding_budget(steps_w[w]);
+  }
+  return classify_growth(time, g.window_rms(), floor, s.time_scale, static_cast<double>(steps) * s.h_long);
+}
+
 std::vector<std::pair<double, double>> history(const growth_recorder& g, double h) {
   std::vector<std::pair<double, double>> out;
   const std::vector<double> rms = g.window_rms(), steps = g.window_steps();
@@ -856,12 +889,16 @@ void run_long(const engine_integrator& in, const scenario& s, const engine_optio
     a.seconds_per_step = third[1];
   }
   if (s.conserves_energy) {
-    a.energy_growth = energy.exponent();
+    const growth_class c = growth_of(energy, s, a.long_run_steps);
+    a.energy_growth = c.exponent;
+    a.energy_class = c.kind;
     a.energy_max = energy.max_error();
     a.energy_history = history(energy, s.h_long);
   }
   if (momentum_kept) {
-    a.momentum_growth = momentum.exponent();
+    const growth_class c = growth_of(momentum, s, a.long_run_steps);
+    a.momentum_growth = c.exponent;
+    a.momentum_class = c.kind;
     a.momentum_max = momentum.max_error();
     a.momentum_history = history(momentum, s.h_long);
   }
@@ -975,13 +1012,13 @@ std::optional<long_run> energy_run(const scenario& s, const engine_scenario_audi
   drift d;
   d.name = "energy";
   d.max_relative = a.energy_max;
-  d.budget_relative = 64 * eps * std::sqrt(static_cast<double>(std::max<long long>(a.long_run_steps, 1)));
+  d.budget_relative = engine_rounding_budget(static_cast<double>(a.long_run_steps));
   d.preserved = a.long_run_failure.empty() && d.max_relative <= d.budget_relative;
   d.exponent = a.energy_growth;
   d.kind = d.preserved ? "preserved to rounding"
            : d.max_relative >= 0.25 || !std::isfinite(d.max_relative) ? "lost (error of order one)"
-           : d.exponent ? growth_kind(*d.exponent)
-                        : "not resolved";
+           : a.energy_class.empty() ? "not resolved"
+                                    : a.energy_class;
   run.invariants.push_back(d);
   return run;
 }
@@ -1136,11 +1173,13 @@ std::string sci(double x) {
   std::snprintf(buf, sizeof buf, "%.1e", x);
   return buf;
 }
-std::string growth(const std::optional<double>& g, double max) {
-  if (!g || !std::isfinite(*g)) return "-";
+/// "bounded (t^0.01, max 2.5e-07)", "not resolvable: ... (max ...)", or "-" (not run).
+std::string growth(const std::string& kind, const std::optional<double>& g, double max) {
+  if (kind.empty()) return "-";
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%s (t^%.2f, max %s)", growth_kind(*g).c_str(), *g, sci(max).c_str());
-  return buf;
+  if (g && std::isfinite(*g)) std::snprintf(buf, sizeof buf, " (t^%.2f, max %s)", *g, sci(max).c_str());
+  else std::snprintf(buf, sizeof buf, " (max %s)", sci(max).c_str());
+  return kind + buf;
 }
 /// "orientation 2.00, angular velocity 4.00" (each class's fit), or "refused", "failed".
 std::string fit_text(const engine_scenario_audit& a) {
@@ -1185,8 +1224,8 @@ void print_engines(std::ostream& out, const std::vector<engine_audit>& audits, c
   for (const auto& a : audits) {
     for (const auto& s : a.scenarios) {
       std::snprintf(line, sizeof line, "%-28s %-20s %-46s %-34s %-34s\n", a.integrator.c_str(), s.scenario.c_str(),
-                    fit_text(s).c_str(), growth(s.energy_growth, s.energy_max).c_str(),
-                    growth(s.momentum_growth, s.momentum_max).c_str());
+                    fit_text(s).c_str(), growth(s.energy_class, s.energy_growth, s.energy_max).c_str(),
+                    growth(s.momentum_class, s.momentum_growth, s.momentum_max).c_str());
       out << line;
       if (!s.failure.empty()) out << "    failed: " << s.failure << "\n";
       if (s.constraint_max) out << "    constraint: " << constraint_text(s) << "\n";
@@ -1241,7 +1280,9 @@ std::string engines_to_json(const std::vector<engine_audit>& audits, const std::
       if (s.global.stalled) js["stall"] = {{"error", s.global.stalled->error}, {"h", s.global.stalled->h}};
       for (const auto& [name, study] : s.classes) js["classes"][name] = study_json(study);
       if (s.energy_growth) js["energy_growth"] = *s.energy_growth;
+      if (!s.energy_class.empty()) js["energy_class"] = s.energy_class;
       if (s.momentum_growth) js["momentum_growth"] = *s.momentum_growth;
+      if (!s.momentum_class.empty()) js["momentum_class"] = s.momentum_class;
       js["energy_max"] = s.energy_max;
       js["momentum_max"] = s.momentum_max;
       js["long_run_steps"] = s.long_run_steps;
@@ -1291,9 +1332,9 @@ std::string engines_to_markdown(const std::vector<engine_audit>& audits, const s
   for (const auto& a : audits)
     for (const auto& s : a.scenarios)
       md << "| " << a.integrator << " | " << s.scenario << " | " << fit_text(s) << " | "
-         << growth(s.energy_growth, s.energy_max)
+         << growth(s.energy_class, s.energy_growth, s.energy_max)
          << (s.long_run_failure.empty() ? "" : " (failed at " + s.long_run_failure + ")") << " | "
-         << growth(s.momentum_growth, s.momentum_max) << " | " << constraint_text(s) << " | "
+         << growth(s.momentum_class, s.momentum_growth, s.momentum_max) << " | " << constraint_text(s) << " | "
          << (s.det_minus_one ? sci(*s.det_minus_one) + " (" + sci(s.det_resolution) + ")" : std::string("-")) << " | "
          << (s.reversal_defect ? sci(*s.reversal_defect) + ", " + sci(*s.reversal_defect_half)
                                : s.reversal_refused.empty() ? std::string("-") : std::string("no negative step"))

@@ -126,6 +126,10 @@ struct scenario {
   double t_end = 1;              ///< time of the order study
   long steps0 = 16;              ///< its coarsest run
   double h_long = 0.01;          ///< step of the long run
+  /// The scenario's own time scale: the period of its slowest motion where it has one, else
+  /// the order study's span (said where it is set). The long run's growth classes are
+  /// fitted past one of it and need ten (studies.hpp, classify_growth).
+  double time_scale = 1;
   bool conserves_energy = true;
   /// Angular momentum about the world origin conserved: every component, or only its
   /// vertical one (a top on a fixed point under gravity).
@@ -253,6 +257,9 @@ struct engine_scenario_audit {
   std::optional<constraint_violation> constraint_first, constraint_max;
   std::optional<double> constraint_growth;
   std::optional<double> energy_growth, momentum_growth;  ///< exponents of the long run
+  /// Their growth classes (classify_growth: past the start-up transient, over ten of the
+  /// scenario's time scales, a plateau over the last decade bounded).
+  std::string energy_class, momentum_class;
   double energy_max = 0, momentum_max = 0;               ///< largest relative errors
   std::string long_run_failure;
   long long long_run_steps = 0;

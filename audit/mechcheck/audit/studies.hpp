@@ -12,8 +12,10 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iomanip>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -305,6 +307,85 @@ inline std::string growth_kind(double g) {
   if (g < 0.75) return "random walk";
   if (g < 1.5) return "linear drift";
   return "faster than linear";
+}
+
+/// The growth class of a long run's error from its windows (growth_recorder's): window w's
+/// mean time time[w], RMS rms[w] and the rounding floor floor[w] at its step count. A start-up
+/// transient must not read as growth: a body that leaves an axis lifts the error from the
+/// rounding floor to a plateau, and a fit across the jump reads "t^2.4". So
+///  - a run shorter than ten of the scenario's time scales (its slowest period, stated per
+///    scenario) is not resolvable: its last decade of time would hold less than one period;
+///  - only windows past one time scale and above their rounding floor are fitted;
+///  - a plateau over the run's last decade (three windows or more there, all above the
+///    floor, fitted exponent below 1/4) is bounded, whatever came before it;
+///  - otherwise the exponent over the fitted windows gives the class (growth_kind); fewer
+///    than three such windows, with some above the floor, is not resolvable; none above the
+///    floor past one time scale is bounded (at the floor).
+struct growth_class {
+  std::optional<double> exponent;  ///< the slope that decided, where one did
+  std::string kind;                ///< growth_kind's words, or "not resolvable: ..."
+};
+
+/// Least-squares slope of log y against log x over the indices given (nothing below two).
+inline std::optional<double> log_log_slope(const std::vector<double>& x, const std::vector<double>& y,
+                                           const std::vector<std::size_t>& use) {
+  if (use.size() < 2) return std::nullopt;
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (const std::size_t i : use) {
+    const double lx = std::log(x[i]), ly = std::log(y[i]);
+    sx += lx;
+    sy += ly;
+    sxx += lx * lx;
+    sxy += lx * ly;
+  }
+  const double n = static_cast<double>(use.size());
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+inline growth_class classify_growth(const std::vector<double>& time, const std::vector<double>& rms,
+                                    const std::vector<double>& floor, double time_scale, double t_end) {
+  growth_class g;
+  const auto text = [](double x) {
+    std::ostringstream o;
+    o << std::setprecision(3) << x;
+    return o.str();
+  };
+  if (!(t_end >= 10 * time_scale)) {
+    g.kind = "not resolvable: the run reaches t = " + text(t_end) + ", under ten of the scenario's time scale " +
+             text(time_scale);
+    return g;
+  }
+  std::vector<std::size_t> fitted, last_decade;
+  bool last_decade_at_floor = false;
+  for (std::size_t w = 0; w < time.size() && w < rms.size() && w < floor.size(); ++w) {
+    if (!(time[w] >= time_scale) || !(rms[w] > 0) || !std::isfinite(rms[w])) continue;
+    const bool above = rms[w] > floor[w];
+    if (time[w] >= t_end / 10) {
+      if (above) last_decade.push_back(w);
+      else last_decade_at_floor = true;
+    }
+    if (above) fitted.push_back(w);
+  }
+  if (last_decade.size() >= 3 && !last_decade_at_floor) {
+    const double slope = *log_log_slope(time, rms, last_decade);
+    if (slope < 0.25) {
+      g.exponent = slope;
+      g.kind = "bounded";
+      return g;
+    }
+  }
+  if (fitted.empty()) {
+    g.kind = "bounded";  // at the rounding floor past one time scale
+    return g;
+  }
+  if (fitted.size() < 3) {
+    g.kind = "not resolvable: " + std::to_string(fitted.size()) + " windows past t = " + text(time_scale) +
+             " above the rounding floor";
+    return g;
+  }
+  g.exponent = log_log_slope(time, rms, fitted);
+  g.kind = growth_kind(*g.exponent);
+  return g;
 }
 
 }  // namespace mechcheck::audit

@@ -56,6 +56,66 @@ struct free_symmetric_top {
   }
 };
 
+namespace detail {
+/// The elliptic solution's constants for asymmetric_top_angular_velocity (reduced to
+/// M^2 > 2 E I2 and Omega_3 > 0, as it says) and asymmetric_top_period.
+template <class T>
+struct asymmetric_top_constants {
+  bool exchanged = false, turned = false;
+  vector3<T> in, w;  ///< the moments and Omega(0) after the reduction
+  T top, a, b, c, lambda, k2;
+};
+
+template <class T>
+asymmetric_top_constants<T> asymmetric_top_solve(const vector3<T>& moments, const vector3<T>& omega0,
+                                                 const char* function) {
+  using std::sqrt;
+  const std::string name = function;
+  if (!(moments(0) > 0 && moments(0) < moments(1) && moments(1) < moments(2)))
+    throw domain_error(name + ": need 0 < I1 < I2 < I3, got " + to_text(moments));
+  for (int i = 0; i < 3; ++i)
+    if (!is_finite(omega0(i)) || !is_finite(moments(i)))
+      throw non_finite_error(name + ": I = " + to_text(moments) + ", Omega(0) = " + to_text(omega0));
+  observe_sign(omega0(0), function, "Omega_1(0)");
+  observe_sign(omega0(1), function, "Omega_2(0)");
+  observe_sign(omega0(2), function, "Omega_3(0)");
+  vector3<T> m = moments.cwiseProduct(omega0);
+  const T m2 = m.squaredNorm();
+  const T two_e = omega0.dot(m);
+  const T pivot = m2 - two_e * moments(1);
+  if (pivot == 0) throw domain_error(name + ": M^2 = 2 E I2 (the separatrix)");
+  // Reduce to M^2 > 2 E I2 (exchange axes 1 and 3) and Omega_3 > 0.
+  asymmetric_top_constants<T> k;
+  k.exchanged = pivot < 0;
+  k.in = moments;
+  k.w = omega0;
+  if (k.exchanged) {
+    k.in = vector3<T>(moments(2), moments(1), moments(0));
+    k.w = vector3<T>(omega0(2), omega0(1), omega0(0));
+  }
+  k.turned = k.w(2) < 0;
+  if (k.turned) k.w = vector3<T>(k.w(0), -k.w(1), -k.w(2));
+  const T i1 = k.in(0), i2 = k.in(1), i3 = k.in(2);
+  // Differences of the form 2 E I_a - M^2 = sum_j I_j (I_a - I_j) Omega_j^2, exactly
+  // non-negative, with no cancellation between 2 E I_a and M^2.
+  const auto excess = [&](const T& ia) {
+    T s = 0;
+    for (int j = 0; j < 3; ++j) s += k.in(j) * (ia - k.in(j)) * k.w(j) * k.w(j);
+    return s;
+  };
+  k.top = excess(i3);            // 2 E I3 - M^2
+  const T bottom = -excess(i1);  // M^2 - 2 E I1, of the same sign
+  k.a = sqrt(k.top / (i1 * (i3 - i1)));
+  k.b = sqrt(k.top / (i2 * (i3 - i2)));
+  k.c = sqrt(bottom / (i3 * (i3 - i1)));
+  k.lambda = sqrt((i3 - i2) * bottom / (i1 * i2 * i3));
+  k.k2 = (i2 - i1) * k.top / ((i3 - i2) * bottom);
+  if (!(k.k2 < 1))
+    throw domain_error(name + ": modulus^2 = " + to_text(k.k2) + " is not below 1 (on the separatrix)");
+  return k;
+}
+}  // namespace detail
+
 /// Body angular velocity of a free asymmetric top at time t from Omega(0), by Jacobi
 /// elliptic functions (Landau & Lifshitz, Mechanics, section 37). For I1 < I2 < I3 and
 /// M^2 > 2 E I2:
@@ -76,65 +136,35 @@ vector3<T> asymmetric_top_angular_velocity(const vector3<T>& moments, const vect
                                            const T& t) {
   using std::atan2;
   using std::sqrt;
-  if (!(moments(0) > 0 && moments(0) < moments(1) && moments(1) < moments(2)))
-    throw domain_error("asymmetric_top_angular_velocity: need 0 < I1 < I2 < I3, got " +
-                       to_text(moments));
-  for (int i = 0; i < 3; ++i)
-    if (!is_finite(omega0(i)) || !is_finite(moments(i)))
-      throw non_finite_error("asymmetric_top_angular_velocity: I = " + to_text(moments) +
-                             ", Omega(0) = " + to_text(omega0));
+  const auto c = detail::asymmetric_top_solve(moments, omega0, "asymmetric_top_angular_velocity");
   if (!is_finite(t)) throw non_finite_error("asymmetric_top_angular_velocity: t = " + to_text(t));
-  observe_sign(omega0(0), "asymmetric_top_angular_velocity", "Omega_1(0)");
-  observe_sign(omega0(1), "asymmetric_top_angular_velocity", "Omega_2(0)");
-  observe_sign(omega0(2), "asymmetric_top_angular_velocity", "Omega_3(0)");
   observe_sign(t, "asymmetric_top_angular_velocity", "t");
-  vector3<T> m = moments.cwiseProduct(omega0);
-  const T m2 = m.squaredNorm();
-  const T two_e = omega0.dot(m);
-  const T pivot = m2 - two_e * moments(1);
-  if (pivot == 0)
-    throw domain_error("asymmetric_top_angular_velocity: M^2 = 2 E I2 (the separatrix)");
-  // Reduce to M^2 > 2 E I2 (exchange axes 1 and 3) and Omega_3 > 0.
-  const bool exchanged = pivot < 0;
-  vector3<T> in = moments, w = omega0;
-  if (exchanged) {
-    in = vector3<T>(moments(2), moments(1), moments(0));
-    w = vector3<T>(omega0(2), omega0(1), omega0(0));
-  }
-  const bool turned = w(2) < 0;
-  if (turned) w = vector3<T>(w(0), -w(1), -w(2));
-  const T i1 = in(0), i2 = in(1), i3 = in(2);
-  // Differences of the form 2 E I_a - M^2 = sum_j I_j (I_a - I_j) Omega_j^2, exactly
-  // non-negative, with no cancellation between 2 E I_a and M^2.
-  const auto excess = [&](const T& ia) {
-    T s = 0;
-    for (int j = 0; j < 3; ++j) s += in(j) * (ia - in(j)) * w(j) * w(j);
-    return s;
-  };
-  const T top = excess(i3);     // 2 E I3 - M^2
-  const T bottom = -excess(i1); // M^2 - 2 E I1, of the same sign
-  const T a = sqrt(top / (i1 * (i3 - i1))), b = sqrt(top / (i2 * (i3 - i2)));
-  const T c = sqrt(bottom / (i3 * (i3 - i1)));
-  const T lambda = sqrt((i3 - i2) * bottom / (i1 * i2 * i3));
-  const T k2 = (i2 - i1) * top / ((i3 - i2) * bottom);
-  if (!(k2 < 1))
-    throw domain_error("asymmetric_top_angular_velocity: modulus^2 = " + to_text(k2) +
-                       " is not below 1 (on the separatrix)");
-  const T k = sqrt(k2);
+  const T k = sqrt(c.k2);
   // Phase: sn = Omega_2 / B, cn = Omega_1 / A at t = 0 (A = B = 0 is the steady spin;
   // 2 E I3 - M^2 is negative in the exchanged frame).
   T tau0 = 0;
-  if (top != 0) tau0 = boost::math::ellint_1(k, T(atan2(w(1) / b, w(0) / a)));
+  if (c.top != 0) tau0 = boost::math::ellint_1(k, T(atan2(c.w(1) / c.b, c.w(0) / c.a)));
   T cn, dn_boost;
-  const T sn = boost::math::jacobi_elliptic(k, T(tau0 + lambda * t), &cn, &dn_boost);
+  const T sn = boost::math::jacobi_elliptic(k, T(tau0 + c.lambda * t), &cn, &dn_boost);
   // dn from sn: Boost.Math's dn is wrong near the quarter period (Boost 1.81: dn at
   // u = K for k^2 = 1/2 is 0.706466 in double, off by 6.4e-4 from sqrt(1/2));
   // 1 - k^2 sn^2 >= 1 - k^2 > 0 is well conditioned.
-  const T dn = sqrt(T(1 - k2 * sn * sn));
-  vector3<T> out(a * cn, b * sn, c * dn);
-  if (turned) out = vector3<T>(out(0), -out(1), -out(2));
-  if (exchanged) out = vector3<T>(out(2), out(1), out(0));
+  const T dn = sqrt(T(1 - c.k2 * sn * sn));
+  vector3<T> out(c.a * cn, c.b * sn, c.c * dn);
+  if (c.turned) out = vector3<T>(out(0), -out(1), -out(2));
+  if (c.exchanged) out = vector3<T>(out(2), out(1), out(0));
   return out;
+}
+
+/// The period of the body angular velocity of asymmetric_top_angular_velocity: cn and sn
+/// repeat after 4 K(k), so Omega(t) does after 4 K(k) / lambda (Landau & Lifshitz section
+/// 37). It grows without bound towards the separatrix (k -> 1): 39.1 for
+/// I = (1, 2, 3), Omega(0) = (0.01, 1, 0.01). Same domain and errors as that function.
+template <class T>
+T asymmetric_top_period(const vector3<T>& moments, const vector3<T>& omega0) {
+  using std::sqrt;
+  const auto c = detail::asymmetric_top_solve(moments, omega0, "asymmetric_top_period");
+  return 4 * boost::math::ellint_1(T(sqrt(c.k2))) / c.lambda;
 }
 
 }  // namespace mechcheck::reference
