@@ -20,6 +20,7 @@
 #include "mechcheck/harness/generators.hpp"
 #include "mechcheck/harness/law.hpp"
 #include "mechcheck/harness/report.hpp"
+#include "scratch.hpp"
 #include "tiers.hpp"
 
 namespace harness_boundaries {
@@ -298,8 +299,8 @@ struct endless_law {
 };
 
 TEST(harness_outcomes, a_law_past_its_time_limit_leaves_a_timeout_row) {
-  const auto dir = std::filesystem::temp_directory_path() / "mechcheck_timeout_row";
-  std::filesystem::remove_all(dir);
+  const mechcheck_test::scratch_directory scratch;
+  const auto dir = scratch / "mechcheck_timeout_row";
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);
   if (child == 0) {
@@ -323,8 +324,8 @@ TEST(harness_outcomes, a_law_past_its_time_limit_leaves_a_timeout_row) {
 }
 
 TEST(harness_outcomes, the_report_counts_every_outcome_and_refuses_inconsistent_rows) {
-  const auto dir = std::filesystem::temp_directory_path() / "mechcheck_outcome_counts";
-  std::filesystem::remove_all(dir);
+  const mechcheck_test::scratch_directory scratch;
+  const auto dir = scratch / "mechcheck_outcome_counts";
   const law_result rows[] = {run_outcome_law<0>(), run_outcome_law<1>(), run_outcome_law<2>(),
                              run_outcome_law<3>(), run_outcome_law<4>(), run_outcome_law<5>(),
                              run_outcome_law<1, true>()};
@@ -366,8 +367,8 @@ struct nan_law {
 };
 
 TEST(harness_outcomes, a_non_finite_residual_round_trips_through_its_row) {
-  const auto dir = std::filesystem::temp_directory_path() / "mechcheck_nan_row";
-  std::filesystem::remove_all(dir);
+  const mechcheck_test::scratch_directory scratch;
+  const auto dir = scratch / "mechcheck_nan_row";
   const law_result r = run_law<nan_law, double>(run_config{});
   EXPECT_FALSE(r.passed);
   EXPECT_EQ(r.max_residual_eps, INFINITY);
@@ -490,8 +491,8 @@ TEST(harness_domains, validated_parameters_and_regions_no_law_reaches_are_named)
                          std::string::npos;
   EXPECT_TRUE(named);
   // Rows carry the domains through the report files.
-  const auto dir = std::filesystem::temp_directory_path() / "mechcheck_domain_rows";
-  std::filesystem::remove_all(dir);
+  const mechcheck_test::scratch_directory scratch;
+  const auto dir = scratch / "mechcheck_domain_rows";
   write_row(r, dir);
   const auto back = read_rows(dir);
   ASSERT_EQ(back.size(), 1u);

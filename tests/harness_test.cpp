@@ -18,6 +18,7 @@
 #include "mechcheck/harness/law.hpp"
 #include "mechcheck/harness/coverage.hpp"
 #include "mechcheck/harness/report.hpp"
+#include "scratch.hpp"
 
 namespace {
 using namespace mechcheck;
@@ -143,8 +144,8 @@ TEST(harness_config, environment_overrides_and_bad_values) {
 }
 
 TEST(harness_report, rows_round_trip_into_the_json_contract) {
-  const auto dir = std::filesystem::temp_directory_path() / "mechcheck_report_test";
-  std::filesystem::remove_all(dir);
+  const mechcheck_test::scratch_directory scratch;
+  const auto dir = scratch / "mechcheck_report_test";
   run_config config;
   config.cases = 10;
   write_row(run_law<wrong_angular_momentum, double>(config), dir / "rows");
@@ -301,8 +302,8 @@ int run_report(const std::filesystem::path& rows, const std::filesystem::path& o
 }
 
 TEST(harness_faults, the_report_refuses_missing_truncated_and_malformed_rows) {
-  const auto dir = std::filesystem::temp_directory_path() / "mechcheck_report_faults";
-  std::filesystem::remove_all(dir);
+  const mechcheck_test::scratch_directory scratch;
+  const auto dir = scratch / "mechcheck_report_faults";
   run_config config;
   config.cases = 5;
   // A passing row, so that a report written anyway would claim a pass.
@@ -357,7 +358,8 @@ law_result row_naming(const std::string& id, std::vector<std::string> equations,
 }
 
 std::vector<equation_entry> map_of(const std::string& text) {
-  const auto file = std::filesystem::temp_directory_path() / "mechcheck_equations_test.tsv";
+  const mechcheck_test::scratch_directory scratch;
+  const auto file = scratch / "mechcheck_equations_test.tsv";
   std::ofstream(file) << text;
   auto map = read_equation_map(file);
   std::filesystem::remove(file);
