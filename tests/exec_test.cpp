@@ -8,14 +8,20 @@
 #include <signal.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <random>
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <tuple>
+
+#include <nlohmann/json.hpp>
 
 #include "mechcheck/audit/black_box.hpp"
 #include "mechcheck/audit/drivers.hpp"
@@ -319,6 +325,64 @@ TEST(exec, a_broken_reading_ends_the_child_with_a_typed_error_and_the_audit_goes
   EXPECT_FALSE(a.scenarios.at(0).global.points.empty());
 }
 
+TEST(exec, every_double_round_trips_through_the_protocols_text_in_both_forms) {
+  // Random bit patterns (every exponent, both signs), subnormals, the extremes and the
+  // signed zeros and infinities: written by the parent as hexadecimal or 17 digits, read back
+  // to the same bits -- through number_value and through a reply's "y".
+  namespace ep = audit::exec_protocol;
+  using limits = std::numeric_limits<double>;
+  std::vector<double> xs = {0.0, -0.0, limits::min(), -limits::min(), limits::denorm_min(), -limits::denorm_min(),
+                            limits::max(), -limits::max(), limits::epsilon(), 1.0, -1.0, 0.1, 1.0 / 3,
+                            limits::min() - limits::denorm_min(), limits::infinity(), -limits::infinity()};
+  std::mt19937_64 bits(20261126);
+  for (int k = 0; k < 200000; ++k) {
+    const double x = std::bit_cast<double>(bits());
+    if (!std::isnan(x)) xs.push_back(x);
+  }
+  for (int k = 0; k < 20000; ++k)  // subnormals: exponent field 0
+    xs.push_back(std::bit_cast<double>(bits() & 0x800FFFFFFFFFFFFFull));
+  std::size_t wrong = 0;
+  for (const double x : xs)
+    for (const bool decimal : {false, true}) {
+      const std::string text = ep::number_text(x, decimal);
+      const std::optional<double> back = ep::number_value(text);
+      if (!back || std::bit_cast<std::uint64_t>(*back) != std::bit_cast<std::uint64_t>(x)) {
+        if (++wrong <= 5) ADD_FAILURE() << text << " read back as " << (back ? ep::number_text(*back) : "nothing");
+      }
+    }
+  EXPECT_EQ(wrong, 0u) << "of " << 2 * xs.size();
+  EXPECT_EQ(ep::number_text(1.5), "0x1.8p+0");
+  EXPECT_EQ(ep::number_text(0.1, true), "0.10000000000000001");
+  EXPECT_TRUE(std::isnan(*ep::number_value("nan")));
+  // A reply's numbers, read as the parent reads a state.
+  std::string line = "{\"y\": [";
+  for (std::size_t k = 0; k < 64; ++k) line += (k ? ", \"" : "\"") + ep::number_text(xs[xs.size() - 1 - k], k % 2) + "\"";
+  line += "]}";
+  const std::vector<double> y = ep::parse_numbers(line, "y", 64);
+  for (std::size_t k = 0; k < 64; ++k)
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(y[k]), std::bit_cast<std::uint64_t>(xs[xs.size() - 1 - k])) << k;
+}
+
+TEST(exec, a_malformed_number_is_refused_with_a_typed_error) {
+  namespace ep = audit::exec_protocol;
+  for (const char* bad : {"--1", "+-1", "-+1", "++1", "1e", "1e+", "0x", "0x-1", "-0x-1", "0x1p", "1.0.0", " 1", "1 ",
+                          "", "-", "+", "1,5", "0b101", "1_000", "e5", "0x1.8p+1x", "infinity?", "1/3"}) {
+    EXPECT_FALSE(ep::number_value(bad)) << '"' << bad << '"';
+    const std::string line = std::string("{\"y\": [\"") + bad + "\"]}";
+    try {
+      ep::parse_numbers(line, "y", 1);
+      ADD_FAILURE() << '"' << bad << "\" accepted";
+    } catch (const audit::exec_error& e) {
+      EXPECT_NE(std::string(e.what()).find("is not a number"), std::string::npos) << e.what();
+    }
+  }
+  // Signs and forms that are numbers.
+  EXPECT_EQ(*ep::number_value("+1"), 1.0);
+  EXPECT_EQ(*ep::number_value("-0x1p-1"), -0.5);
+  EXPECT_EQ(*ep::number_value("1E3"), 1000.0);
+  EXPECT_EQ(*ep::number_value("0X1P+1"), 2.0);
+}
+
 TEST(exec, the_protocol_refuses_deep_large_and_malformed_lines_with_their_reason) {
   namespace ep = audit::exec_protocol;
   const auto refused = [](const auto& call) {
@@ -371,9 +435,59 @@ TEST(exec, the_protocol_refuses_deep_large_and_malformed_lines_with_their_reason
             std::string::npos);
   EXPECT_NE(refused([&] { ep::parse_step_reply(R"({"error": "x", "at": 5})", pendulum, 3, true); }).find("names the step"),
             std::string::npos);
+  // A step reply's and a reading's fields are version 1's: another is an error naming it.
+  const std::string frame = "[1,0,0, 0,1,0, 0,0,1, 0,0,-1, 0,0,0, 0,0,0]";
+  EXPECT_EQ(ep::parse_step_reply(R"({"readings": [{"frame": )" + frame + "}]}", pendulum, 1, false).readings.size(), 1u);
+  EXPECT_NE(refused([&] { ep::parse_step_reply(R"({"readings": [{"frame": )" + frame + R"(, "qq": [0]}]})", pendulum, 1, false); })
+                .find("a reading: the field \"qq\" is not one of version 1's (frame, links, q, v)"),
+            std::string::npos);
+  EXPECT_NE(refused([&] { ep::parse_step_reply(R"({"readings": [{"frame": )" + frame + R"(}], "secnds": 1})", pendulum, 1, false); })
+                .find("a step reply: the field \"secnds\" is not one of version 1's (readings, error, at, seconds)"),
+            std::string::npos);
   // The scenario as sent reads back exactly.
   const auto j = ep::scenario_json(pendulum);
   EXPECT_NE(j.find("\"joint\":\"hinge_y\""), std::string::npos) << j;
+}
+
+TEST(exec, a_scenario_sent_in_decimals_reads_back_to_the_bits_of_the_hexadecimal_one) {
+  // Every scenario in both forms: the same tree, and every number of the decimal one the
+  // double of the hexadecimal one (which %a writes exactly), bit for bit; the mass, gravity
+  // and start of the pendulum are the scenario's own.
+  namespace ep = audit::exec_protocol;
+  std::size_t numbers = 0;
+  const std::function<void(const nlohmann::json&, const nlohmann::json&, const std::string&)> same =
+      [&](const nlohmann::json& hex, const nlohmann::json& dec, const std::string& at) {
+        ASSERT_EQ(hex.type(), dec.type()) << at;
+        if (hex.is_object()) {
+          ASSERT_EQ(hex.size(), dec.size()) << at;
+          for (auto it = hex.begin(); it != hex.end(); ++it) same(it.value(), dec.at(it.key()), at + "." + it.key());
+        } else if (hex.is_array()) {
+          ASSERT_EQ(hex.size(), dec.size()) << at;
+          for (std::size_t k = 0; k < hex.size(); ++k) same(hex[k], dec[k], at + "[" + std::to_string(k) + "]");
+        } else if (hex.is_string() && hex.get<std::string>().rfind("0x", 0) != std::string::npos) {
+          const auto a = ep::number_value(hex.get<std::string>()), b = ep::number_value(dec.get<std::string>());
+          ASSERT_TRUE(a && b) << at;
+          EXPECT_EQ(std::bit_cast<std::uint64_t>(*a), std::bit_cast<std::uint64_t>(*b)) << at << ": " << dec;
+          ++numbers;
+        } else if (hex.is_string() && ep::number_value(hex.get<std::string>())) {  // "-0x..." and "0"
+          EXPECT_EQ(std::bit_cast<std::uint64_t>(*ep::number_value(hex.get<std::string>())),
+                    std::bit_cast<std::uint64_t>(*ep::number_value(dec.get<std::string>())))
+              << at;
+          ++numbers;
+        } else {
+          EXPECT_EQ(hex, dec) << at;
+        }
+      };
+  for (const auto& s : audit::scenarios()) {
+    const auto hex = nlohmann::json::parse(ep::scenario_json(s, false)), dec = nlohmann::json::parse(ep::scenario_json(s, true));
+    same(hex, dec, s.name);
+    if (s.name == "pendulum_small") {
+      EXPECT_EQ(*ep::number_value(dec.at("mass").get<std::string>()), s.mass);
+      EXPECT_EQ(*ep::number_value(dec.at("gravity").get<std::string>()), s.gravity);
+      EXPECT_EQ(*ep::number_value(dec.at("rotation0")[0].get<std::string>()), s.rotation0(0, 0));
+    }
+  }
+  EXPECT_GT(numbers, 200u);
 }
 
 }  // namespace exec_test

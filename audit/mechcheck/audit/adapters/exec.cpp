@@ -26,20 +26,46 @@ extern char** environ;
 
 namespace mechcheck::audit {
 
+namespace exec_protocol {
+/// Exact text of a double: C's hexadecimal form ("0x1.8p+1"), or 17 significant digits for
+/// a child that asked for decimals (both round-trip exactly).
+std::string number_text(double x, bool decimal) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, decimal ? "%.17g" : "%a", x);
+  return buf;
+}
+
+/// A number written as text: C's decimal or hexadecimal form ("0.1", "-1e-3", "0x1.8p+1"),
+/// read whole (std::from_chars: correctly rounded, as strtod, and faster); nothing if it is
+/// not one.
+std::optional<double> number_value(std::string_view s) {
+  bool negative = false;
+  if (!s.empty() && (s.front() == '-' || s.front() == '+')) {
+    negative = s.front() == '-';
+    s.remove_prefix(1);
+  }
+  auto format = std::chars_format::general;
+  if (s.size() > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X')) {
+    format = std::chars_format::hex;
+    s.remove_prefix(2);
+  }
+  if (s.empty() || s.front() == '-' || s.front() == '+') return std::nullopt;
+  double x = 0;
+  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), x, format);
+  if (error != std::errc() || end != s.data() + s.size()) return std::nullopt;
+  return negative ? -x : x;
+}
+
+}  // namespace exec_protocol
+
 namespace {
+using exec_protocol::number_text;
+using exec_protocol::number_value;
 using json = nlohmann::json;
 using clock = std::chrono::steady_clock;
 
 constexpr int protocol_version = 1;
 constexpr std::size_t stderr_kept = 2000;  // bytes of the child's standard error kept for messages
-
-/// Exact text of a double: C's hexadecimal form ("0x1.8p+1"), or 17 significant digits for
-/// a child that asked for decimals (both round-trip exactly).
-std::string number_text(double x, bool decimal = false) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, decimal ? "%.17g" : "%a", x);
-  return buf;
-}
 
 /// The start of a text for a message: at most 200 bytes.
 std::string excerpt(std::string_view s) {
@@ -72,27 +98,6 @@ json parse_message(std::string_view line) {
   return message;
 }
 
-/// A number written as text: C's decimal or hexadecimal form ("0.1", "-1e-3", "0x1.8p+1"),
-/// read whole (std::from_chars: correctly rounded, as strtod, and faster); nothing if it is
-/// not one.
-std::optional<double> number_text_value(std::string_view s) {
-  bool negative = false;
-  if (!s.empty() && (s.front() == '-' || s.front() == '+')) {
-    negative = s.front() == '-';
-    s.remove_prefix(1);
-  }
-  auto format = std::chars_format::general;
-  if (s.size() > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X')) {
-    format = std::chars_format::hex;
-    s.remove_prefix(2);
-  }
-  if (s.empty() || s.front() == '-' || s.front() == '+') return std::nullopt;
-  double x = 0;
-  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), x, format);
-  if (error != std::errc() || end != s.data() + s.size()) return std::nullopt;
-  return negative ? -x : x;
-}
-
 /// A number of a reply: a JSON number, or a string in C's decimal or hexadecimal form;
 /// "nan" and "inf" (what C's %a and Python's float.hex write) are read, and refused unless
 /// `finite_only` is false.
@@ -103,7 +108,7 @@ double number_of(const json& v, const std::string& what, bool finite_only = true
   } else if (v.is_string()) {
     const std::string& s = v.get_ref<const std::string&>();
     if (s.size() > 64) throw exec_error(what + ": a number of " + std::to_string(s.size()) + " characters");
-    const std::optional<double> read = number_text_value(s);
+    const std::optional<double> read = number_value(s);
     if (!read) throw exec_error(what + ": \"" + s + "\" is not a number");
     x = *read;
   } else {
@@ -181,15 +186,23 @@ void ignore_sigpipe() {
 
 /// A field of `object` that version 1 of the protocol does not have is an error naming it
 /// and the fields it has (a misspelt claim would otherwise be dropped without a word).
+void unknown_field(std::string_view key, std::initializer_list<const char*> known, const std::string& what) {
+  std::string names;
+  for (const char* k : known) names += (names.empty() ? "" : ", ") + std::string(k);
+  throw exec_error(what + ": the field \"" + excerpt(key.substr(0, 64)) + "\" is not one of version " +
+                   std::to_string(protocol_version) + "'s (" + names + ")");
+}
+bool known_field(std::string_view key, std::initializer_list<const char*> known) {
+  return std::any_of(known.begin(), known.end(), [key](const char* k) { return key == k; });
+}
 void only_known_fields(const json& object, std::initializer_list<const char*> known, const std::string& what) {
-  for (auto field = object.begin(); field != object.end(); ++field) {
-    const std::string& key = field.key();  // a variable, not a binding: the lambda captures it (Clang 14)
-    if (std::any_of(known.begin(), known.end(), [&](const char* k) { return key == k; })) continue;
-    std::string names;
-    for (const char* k : known) names += (names.empty() ? "" : ", ") + std::string(k);
-    throw exec_error(what + ": the field \"" + key.substr(0, 64) + "\" is not one of version " +
-                     std::to_string(protocol_version) + "'s (" + names + ")");
-  }
+  for (auto field = object.begin(); field != object.end(); ++field)
+    if (!known_field(field.key(), known)) unknown_field(field.key(), known, what);
+}
+/// The same for an object of a step reply (parsed by simdjson).
+void only_known_fields(simdjson::dom::object object, std::initializer_list<const char*> known, const std::string& what) {
+  for (const auto field : object)
+    if (!known_field(field.key, known)) unknown_field(field.key, known, what);
 }
 
 /// The claims of a handshake or of one of its integrators.
@@ -770,7 +783,7 @@ void numbers_of(simdjson::dom::element e, const std::string& what, std::vector<d
     if (x.is_string()) {
       const std::string_view text = x.get_string().value_unsafe();
       if (text.size() > 64) throw exec_error(what + "[" + std::to_string(out.size()) + "]: a number of " + std::to_string(text.size()) + " characters");
-      const std::optional<double> read = number_text_value(text);
+      const std::optional<double> read = number_value(text);
       if (!read) throw exec_error(what + "[" + std::to_string(out.size()) + "]: \"" + excerpt(text) + "\" is not a number");
       v = *read;
     } else if (x.get_double().get(v)) {
@@ -797,6 +810,7 @@ body_frame frame_of(const std::vector<double>& x, const std::string& what) {
 body_reading reading_of(simdjson::dom::element e, const scenario& s, const std::string& what, std::size_t& budget) {
   simdjson::dom::object r;
   if (e.get_object().get(r)) throw exec_error(what + ": a reading is not an object: " + excerpt(simdjson::minify(e)));
+  only_known_fields(r, {"frame", "links", "q", "v"}, what + ": a reading");
   std::vector<double> x;
   body_reading out;
   if (s.structure == body_structure::one_body) {
@@ -851,6 +865,7 @@ exec_protocol::step_reply step_reply_of(std::string_view line, const scenario& s
   simdjson::dom::object top;
   if (doc.get_object().get(top)) throw exec_error("the reply is not a JSON object: " + excerpt(line));
   if (!top["op"].error()) throw exec_error("an unknown request from the child: " + excerpt(line));
+  only_known_fields(top, {"readings", "error", "at", "seconds"}, "a step reply");
   simdjson::dom::array readings;
   std::size_t count = 0;
   if (simdjson::dom::element r; !top["readings"].get(r)) {

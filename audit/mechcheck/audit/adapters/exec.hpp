@@ -99,6 +99,16 @@ inline constexpr std::size_t max_numbers = 1 << 17;
 inline constexpr std::size_t max_name = 256;
 inline constexpr std::size_t max_text = 4096;
 
+/// The exact text of a double the parent writes: C's hexadecimal form ("0x1.8p+1"), or 17
+/// significant digits ("%.17g") for a child that asked for decimals; both read back to the
+/// same double (number_value), subnormals, the extremes and -0 included.
+std::string number_text(double x, bool decimal = false);
+
+/// A number written as text, read whole: an optional sign, then C's decimal or hexadecimal
+/// form ("0.1", "-1e-3", "0x1.8p+1", "inf", "nan"), correctly rounded; nothing for anything
+/// else ("--1", "+-1", "1e", "0x", " 1", "1 ", "").
+std::optional<double> number_value(std::string_view s);
+
 /// An engine child's integrator, as its handshake declares it.
 struct integrator_fields {
   std::string name, origin;
