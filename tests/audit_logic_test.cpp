@@ -16,6 +16,8 @@
 #include <nlohmann/json.hpp>
 
 #include "mechcheck/audit/audit.hpp"
+#include "mechcheck/audit/drivers.hpp"
+#include "mechcheck/audit/engines.hpp"
 #include "mechcheck/audit/finite_differences.hpp"
 #include "mechcheck/audit/report.hpp"
 #include "mechcheck/audit/builtin.hpp"
@@ -267,6 +269,33 @@ TEST(audit_growth, powers_of_t_give_their_exponent_and_class) {
   EXPECT_EQ(audit::growth_kind(0.75), "linear drift");
   EXPECT_EQ(audit::growth_kind(1.4999), "linear drift");
   EXPECT_EQ(audit::growth_kind(1.5), "faster than linear");
+}
+
+TEST(audit_verdicts, claims_hold_unless_a_claim_is_contradicted) {
+  // Every outcome but contradicted leaves the claims holding -- not resolvable included (the
+  // study could not tell: --require does not fail on it): a stepper's, an engine's and a
+  // driver's audit alike.
+  using o = audit::verdict::outcome;
+  for (const o r : {o::confirmed, o::contradicted, o::not_declared, o::not_measured, o::not_resolvable, o::reading,
+                    o::exceeds, o::to_precision_given}) {
+    const bool holds = r != o::contradicted;
+    audit::verdict v, confirmed;
+    v.claim = "order";
+    v.result = r;
+    confirmed.result = o::confirmed;
+    audit::stepper_audit s;
+    s.verdicts = {confirmed, v, confirmed};
+    EXPECT_EQ(s.claims_hold(), holds) << static_cast<int>(r);
+    for (int k = 0; k < 3; ++k) {
+      audit::engine_audit e;
+      e.order = e.symplectic = e.energy = confirmed;
+      (k == 0 ? e.order : k == 1 ? e.symplectic : e.energy) = v;
+      EXPECT_EQ(e.claims_hold(), holds) << static_cast<int>(r) << " in verdict " << k;
+    }
+    audit::driver_audit d;
+    d.error_control = v;
+    EXPECT_EQ(d.claims_hold(), holds) << static_cast<int>(r);
+  }
 }
 
 TEST(audit_growth, a_transient_is_not_growth_and_a_short_run_is_not_resolvable) {
@@ -794,6 +823,21 @@ audit::problem_audit energy_run(const std::string& kind, double max, std::option
   run.invariants.push_back(d);
   p.run = run;
   return p;
+}
+
+TEST(audit_verdicts, odeints_sb3a_is_held_to_the_double_precision_its_header_states) {
+  // Two of its coefficients are double literals and the header says it "cannot be used with
+  // multiprecision types": its claims carry double's precision in every tier (the m4 variant,
+  // defined analytically, none).
+  for (const auto& s : audit::odeint::all_steppers<mpfr50>()) {
+    if (s.name == "odeint::symplectic_rkn_sb3a_mclachlan") {
+      ASSERT_TRUE(s.declared.coefficient_precision) << s.name;
+      EXPECT_EQ(*s.declared.coefficient_precision, 0x1p-52);
+      EXPECT_NE(s.declared.coefficient_words.find("cannot be used with multiprecision types"), std::string::npos);
+    } else {
+      EXPECT_FALSE(s.declared.coefficient_precision) << s.name;
+    }
+  }
 }
 
 TEST(audit_verdicts, a_declared_energy_behaviour_against_the_growth_class) {

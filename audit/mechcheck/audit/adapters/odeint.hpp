@@ -258,6 +258,23 @@ stepper_under_audit<T> velocity_verlet_stepper(std::string name = "odeint::veloc
   return s;
 }
 
+/// symplectic_rkn_sb3a_mclachlan: two of its coefficients are double literals
+/// (0.40518861839525227722, -0.28714404081652408900), and its header says so: "This method
+/// cannot be used with multiprecision types since the coefficients are not defined
+/// analytically". Its claims are held to the precision of double (2^-52 relative) in every
+/// tier: in mpfr50 its order 4 holds to that precision, and the one-step error of those
+/// digits is what the header warns of, not a contradiction.
+template <class T>
+stepper_under_audit<T> sb3a_stepper() {
+  stepper_under_audit<T> s = symplectic_stepper<symplectic_rkn_sb3a_mclachlan, T>(
+      "odeint::symplectic_rkn_sb3a_mclachlan", "symplectic_rkn_sb3a_mclachlan.hpp");
+  s.declared.coefficient_precision = 0x1p-52;
+  s.declared.coefficient_words =
+      "two coefficients are double literals; the header: \"This method cannot be used with multiprecision types "
+      "since the coefficients are not defined analytically\"";
+  return s;
+}
+
 /// All of the above, in tier T.
 template <class T>
 std::vector<stepper_under_audit<T>> all_steppers() {
@@ -272,8 +289,7 @@ std::vector<stepper_under_audit<T>> all_steppers() {
                                              false),
       velocity_verlet_stepper<T>(),
       symplectic_stepper<symplectic_euler, T>("odeint::symplectic_euler", "symplectic_euler.hpp"),
-      symplectic_stepper<symplectic_rkn_sb3a_mclachlan, T>(
-          "odeint::symplectic_rkn_sb3a_mclachlan", "symplectic_rkn_sb3a_mclachlan.hpp"),
+      sb3a_stepper<T>(),
       symplectic_stepper<symplectic_rkn_sb3a_m4_mclachlan, T>(
           "odeint::symplectic_rkn_sb3a_m4_mclachlan", "symplectic_rkn_sb3a_m4_mclachlan.hpp"),
   };
