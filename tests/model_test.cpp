@@ -9,12 +9,15 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
+#include <tuple>
 
 #include "mechcheck/audit/audit.hpp"
 #include "mechcheck/audit/model.hpp"
 #include "mechcheck/audit/problems/classic.hpp"
 #include "mechcheck/integrators/steppers.hpp"
+#include "scratch.hpp"
 
 namespace model_test {
 using namespace mechcheck;
@@ -40,14 +43,17 @@ struct quartic_lagrangian {
   }
 };
 
-/// The angular momentum q1 p2 - q2 p1 (conserved) and, as a wrong declaration, q1 p2 + q2 p1.
+/// The angular momentum q1 p2 - q2 p1 (conserved) and, as a wrong declaration, q1 p2 + q2 p1;
+/// with a tilt, q1 p2 - q2 p1 + tilt q1 ({F, H} = tilt p1: violated by a small amount).
 struct angular_momentum {
   int sign = -1;
+  mpfr50 tilt = 0;
   template <class S>
   dynamic_vector<S> operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& p) const {
     dynamic_vector<S> out(1);
     const S a = q(0) * p(1), b = q(1) * p(0);
     out(0) = sign < 0 ? S(a - b) : S(a + b);
+    if (tilt != 0) out(0) += lift<S>(static_cast<real_type_t<S>>(tilt)) * q(0);
     return out;
   }
 };
@@ -64,10 +70,10 @@ audit::model_setup quartic_setup(const std::string& name) {
   return s;
 }
 
-/// A cache of its own per test run, under the build tree's temporary directory.
+/// A cache of its own per test run and tag, in a scratch directory of the whole run.
 audit::reference_settings fresh_settings(const std::string& tag) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("mechcheck-model-test-" + tag + "-" + std::to_string(::getpid()));
+  static const mechcheck_test::scratch_directory caches("model-test-caches", true);
+  const auto dir = caches / tag;
   std::filesystem::remove_all(dir);
   audit::reference_settings s;
   s.cache = std::make_shared<audit::reference_cache>(dir);
@@ -119,6 +125,31 @@ TEST(Model, ANonConservedIntegralIsRefusedWithItsCounterexample) {
     EXPECT_NE(what.find("quartic_wrong"), std::string::npos) << what;
     EXPECT_NE(what.find("'q1 p2 + q2 p1' is not conserved: {F, H} = "), std::string::npos) << what;
     EXPECT_NE(what.find("at q = ("), std::string::npos) << what;
+  }
+}
+
+TEST(Model, AnIntegralViolatedJustAboveTheCheckBudgetIsRefusedAndJustBelowItIsNot) {
+  // F = q1 p2 - q2 p1 + tilt q1: {F, H} = tilt p1, about 0.6 tilt of the magnitude of its
+  // terms near the start q = (1, 0), p = (0.25, 0.75). A tilt of 1000 budgets is refused, of
+  // 1/1000 budget accepted (the budget is 2^16 eps(mpfr50), 6e-45: a budget in double's
+  // epsilon, 1.5e-11, would accept both).
+  const mpfr50 budget = audit::detail::check_budget();
+  for (const double factor : {1000.0, 1e-3}) {
+    SCOPED_TRACE(factor);
+    angular_momentum f;
+    f.tilt = budget * factor;
+    audit::hamiltonian_model<quartic_central, angular_momentum> m{quartic_setup("quartic_tilt"), {}, f};
+    m.setup.integral_names = {"q1 p2 - q2 p1 + tilt q1"};
+    if (factor > 1) {
+      try {
+        static_cast<void>(audit::model_problem<double>(m, fresh_settings("tilt")));
+        ADD_FAILURE() << "an integral violated by 1000 budgets was accepted";
+      } catch (const audit::model_error& e) {
+        EXPECT_NE(std::string(e.what()).find("is not conserved"), std::string::npos) << e.what();
+      }
+    } else {
+      EXPECT_NO_THROW(static_cast<void>(audit::model_problem<double>(m, fresh_settings("tilt2"))));
+    }
   }
 }
 
@@ -197,6 +228,47 @@ TEST(Model, AStartOffTheConstraintManifoldIsRefused) {
   EXPECT_THROW(static_cast<void>(audit::model_problem<double>(leaving, fresh_settings("circle2"))), audit::model_error);
 }
 
+/// A particle of masses (2, 3) along x and y: H = p1^2 / 4 + p2^2 / 6, qdot = M^-1 p.
+struct heavy_particle {
+  template <class S>
+  S operator()(const dynamic_vector<S>&, const dynamic_vector<S>& p) const {
+    return p(0) * p(0) / lift<S>(real_type_t<S>(4)) + p(1) * p(1) / lift<S>(real_type_t<S>(6));
+  }
+};
+
+/// The circle |q| = 5, through q = (3, 4) (exact in every tier).
+struct on_circle_of_5 {
+  template <class S>
+  dynamic_vector<S> operator()(const dynamic_vector<S>& q) const {
+    dynamic_vector<S> g(1);
+    g(0) = q(0) * q(0) + q(1) * q(1) - lift<S>(real_type_t<S>(25));
+    return g;
+  }
+};
+
+TEST(Model, AConstrainedStartIsJudgedByItsVelocityNotItsMomentum) {
+  // On the circle |q| = 5 at q = (3, 4), tangent t = (-4, 3). Momenta p = M t = (-8, 9) move
+  // the particle along t (qdot = t): accepted, though p is not tangent. Momenta p = t give
+  // qdot = (-2, 1), which leaves the circle (d|q|^2/dt = 2 q . qdot = -4): refused, though p
+  // is tangent.
+  audit::model_setup s = quartic_setup("heavy_on_circle");
+  s.q0 = {"3", "4"};
+  s.constraint_names = {"|q|^2 - 25"};
+  s.p0 = {"-8", "9"};
+  const audit::hamiltonian_model<heavy_particle, audit::no_integrals, on_circle_of_5> along{s, {}, {}, {}};
+  EXPECT_NO_THROW(static_cast<void>(audit::model_problem<double>(along, fresh_settings("heavy1"))));
+  s.p0 = {"-4", "3"};
+  const audit::hamiltonian_model<heavy_particle, audit::no_integrals, on_circle_of_5> off{s, {}, {}, {}};
+  try {
+    static_cast<void>(audit::model_problem<double>(off, fresh_settings("heavy2")));
+    ADD_FAILURE() << "a velocity leaving the manifold was accepted";
+  } catch (const audit::model_error& e) {
+    EXPECT_NE(std::string(e.what()).find("the initial velocity leaves the constraint manifold: d|q|^2 - 25/dt = -4 "),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 /// Euler's equations of a free body, I = (1, 2, 3), as a vector field in M; integrals the
 /// energy and |M|^2.
 struct euler_field {
@@ -240,9 +312,30 @@ TEST(Model, VectorFieldModelIsNotCanonicalAndKeepsItsIntegrals) {
   for (Eigen::Index i = 0; i < 3; ++i) EXPECT_NEAR(a.q(i), b.q(i), 8 * 2.2e-16);
 }
 
+TEST(Certification, AgreementDigitsAreRelativeToTheStatesSize) {
+  // Two references 1e-30 apart: on a state of size 1e6 they agree to 36 digits, on one of
+  // size 1e-6 to 24 (absolute agreement would say 30 for both); the zero state is measured
+  // against 1; identical states agree to every digit of mpfr50.
+  const auto pair_at = [](const mpfr50& size) {
+    audit::state<mpfr50> a{dynamic_vector<mpfr50>(2), dynamic_vector<mpfr50>(2)};
+    a.q << size * mpfr50(0.6), mpfr50(0);
+    a.p << mpfr50(0), size * mpfr50(0.8);  // |a| = size
+    audit::state<mpfr50> b = a;
+    b.q(1) += mpfr50("1e-30");
+    return std::pair{a, b};
+  };
+  for (const auto& [size, digits] : {std::pair{1e6, 36.0}, std::pair{1.0, 30.0}, std::pair{1e-6, 24.0}}) {
+    const auto [a, b] = pair_at(mpfr50(size));
+    EXPECT_NEAR(audit::detail::agreement_digits(a, b), digits, 1e-9) << size;
+  }
+  const auto [zero, near] = pair_at(mpfr50(0));
+  EXPECT_NEAR(audit::detail::agreement_digits(zero, near), 30, 1e-9);
+  EXPECT_EQ(audit::detail::agreement_digits(near, near), std::numeric_limits<mpfr50>::digits10);
+}
+
 TEST(ReferenceCache, StoresLoadsAndRefusesAnotherKeyOrABrokenFile) {
-  const auto dir = std::filesystem::temp_directory_path() / ("mechcheck-cache-test-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
+  const mechcheck_test::scratch_directory scratch;
+  const auto dir = scratch / "cache";
   const audit::reference_cache cache(dir);
   audit::certified_state c;
   c.x = {dynamic_vector<mpfr50>(2), dynamic_vector<mpfr50>(2)};
@@ -259,6 +352,21 @@ TEST(ReferenceCache, StoresLoadsAndRefusesAnotherKeyOrABrokenFile) {
   EXPECT_EQ(back->x.p(0), c.x.p(0));
   EXPECT_EQ(back->digits, 37.5);
   EXPECT_FALSE(cache.load("key two"));
+  EXPECT_EQ(cache.note(), "");
+  // The file of "key one" holding another key (an edited key, or a collision of the hash):
+  // a miss, and the note says why; the whole reference is there, only the key differs.
+  const auto file = dir / (audit::fnv1a_hex("key one") + ".json");
+  {
+    std::ifstream in(file);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto at = text.find("\"key one\"");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 9, "\"key 0ne\"");
+    std::ofstream(file, std::ios::trunc) << text;
+  }
+  EXPECT_FALSE(cache.load("key one"));
+  EXPECT_NE(cache.note().find("holds another key than the one asked for"), std::string::npos) << cache.note();
+  EXPECT_TRUE(cache.load("key 0ne") == std::nullopt);  // its own hash names another file
   // A file edited or cut short is a miss, never a wrong reference.
   for (const auto& f : std::filesystem::directory_iterator(dir)) {
     std::ofstream(f.path(), std::ios::trunc) << "{\"key\": \"key one\", \"x\": ";
@@ -290,6 +398,63 @@ TEST(Classic, NamesAndUnknownName) {
   // The description's energies are the problems' own.
   const auto hh = audit::classic_problem<double>("henon_heiles_regular", fresh_settings("names"));
   EXPECT_NEAR(hh.invariants[0].value(hh.initial.q, hh.initial.p), 0.0807167, 1e-7);
+}
+
+TEST(Classic, InitialStatesAreThePublishedOnesByAnIndependentConstruction) {
+  // Each problem's start against its source's numbers or a law they must obey, computed here.
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const auto settings = fresh_settings("published");
+  {  // Pleiades (HNW I, II.10): m_i = i; x' = (0,0,0,0,0,1.75,-1.5), y' = (0,0,0,-1.25,1,0,0);
+     // the total momentum is zero in both components.
+    const auto pr = audit::classic_problem<double>("pleiades", settings);
+    const double vx[7] = {0, 0, 0, 0, 0, 1.75, -1.5}, vy[7] = {0, 0, 0, -1.25, 1, 0, 0};
+    const double x[7] = {3, 3, -1, -3, 2, -2, 2}, y[7] = {3, -3, 2, 0, 0, -4, 4};
+    double px = 0, py = 0;
+    for (int i = 0; i < 7; ++i) {
+      EXPECT_EQ(pr.initial.q(2 * i), x[i]) << i;
+      EXPECT_EQ(pr.initial.q(2 * i + 1), y[i]) << i;
+      EXPECT_EQ(pr.initial.p(2 * i), (i + 1) * vx[i]) << i;
+      EXPECT_EQ(pr.initial.p(2 * i + 1), (i + 1) * vy[i]) << i;
+      px += pr.initial.p(2 * i);
+      py += pr.initial.p(2 * i + 1);
+    }
+    EXPECT_EQ(px, 0);
+    EXPECT_EQ(py, 0);
+  }
+  {  // Arenstorf (HNW I, II.0): y1 = 0.994, y2' = -2.00158510637908252240537862224 in the
+     // rotating frame, so p2 = y2' + y1 = -1.00758510637908252240537862224.
+    const auto pr = audit::classic_problem<double>("arenstorf", settings);
+    EXPECT_EQ(pr.initial.q(0), 0.994);
+    const mpfr50 p2 = mpfr50("-2.00158510637908252240537862224") + mpfr50("0.994");
+    EXPECT_EQ(pr.initial.p(1), static_cast<double>(p2));
+    EXPECT_EQ(pr.initial.p(0), 0.0);
+  }
+  {  // Outer solar system (HLW, Table 2.1): Jupiter's osculating orbit about the Sun (with the
+     // inner planets' mass), by vis-viva from its start: a = 5.2 AU, period within 1 % of
+     // its sidereal period, 4332.59 days.
+    const auto pr = audit::classic_problem<double>("outer_solar_system", settings);
+    const double g = 2.95912208286e-4, sun = 1.00000597682, jupiter = 0.000954786104043;
+    const Eigen::Vector3d r = pr.initial.q.segment(3, 3) - pr.initial.q.head(3);
+    const Eigen::Vector3d v = pr.initial.p.segment(3, 3) / jupiter - pr.initial.p.head(3) / sun;
+    const double mu = g * (sun + jupiter), a = 1 / (2 / r.norm() - v.squaredNorm() / mu);
+    const double period = 2 * std::acos(-1.0) * std::sqrt(a * a * a / mu);
+    EXPECT_NEAR(a, 5.2, 0.1);
+    EXPECT_NEAR(period, 4332.59, 0.01 * 4332.59);
+    EXPECT_NEAR(pr.initial.p(3), jupiter * 0.00565429, 2 * eps * jupiter * 0.00565429);
+  }
+  {  // Henon-Heiles: H = |p|^2/2 + (x^2 + y^2)/2 + x^2 y - y^3/3 at the two starts, 0.0807 and
+     // 0.1621 as their descriptions say.
+    for (const auto& [name, x, y, px, energy] : {std::tuple{"henon_heiles_regular", 0.0, 0.1, 0.39, 0.0807},
+                                                 std::tuple{"henon_heiles_chaotic", 0.0, -0.1, 0.56, 0.1621}}) {
+      const auto pr = audit::classic_problem<double>(name, settings);
+      EXPECT_EQ(pr.initial.q(0), x);
+      EXPECT_EQ(pr.initial.q(1), y);
+      EXPECT_EQ(pr.initial.p(0), px);
+      const double h = px * px / 2 + (x * x + y * y) / 2 + x * x * y - y * y * y / 3;
+      EXPECT_NEAR(pr.invariants[0].value(pr.initial.q, pr.initial.p), h, 4 * eps * h);
+      EXPECT_NEAR(h, energy, 5e-5);
+    }
+  }
 }
 
 TEST(Classic, VerletIsConfirmedAndABrokenVerletContradictedOnHenonHeiles) {

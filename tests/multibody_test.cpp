@@ -173,6 +173,38 @@ TEST(multibody, the_four_bars_closure_meets_its_bar_lengths_and_refuses_an_impos
   EXPECT_THROW(impossible.at(1.0), domain_error);
 }
 
+TEST(multibody, the_chains_certified_references_keep_the_energy_of_the_bars_closed_forms) {
+  // An independent check of each chain's certified reference (its model's Hamiltonian,
+  // problems/chains.hpp): the state it gives at t, put into the bars' frames, has the energy
+  // of the start by observe()'s closed forms (each bar's m g z + m v^2/2 + omega I omega/2,
+  // written apart from the model), to the rounding of the state in double (64 eps of the
+  // energy's scale, sum m g l); the four-bar's loop stays closed. A model with another bar
+  // length, mass or g than the scenario's links would move its energy by order one.
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  for (const auto& s : audit::scenarios()) {
+    if (s.structure != audit::body_structure::chain) continue;
+    SCOPED_TRACE(s.name);
+    double scale = 0;
+    for (const auto& l : s.links) scale += l.mass * s.gravity * (l.hinge.norm() + 2 * l.com.norm());
+    const auto energy_at = [&](double t, double* loop) {
+      const Eigen::VectorXd x = s.exact(t);
+      const Eigen::Index n = x.size() / 2;
+      audit::body_reading r;
+      r.links = audit::chain_frames(s, x.head(n), x.tail(n));
+      const audit::engine_observation o = audit::observe(s, r);
+      if (loop && o.constraint) *loop = o.constraint->loop;
+      return o.energy;
+    };
+    const double e0 = energy_at(0, nullptr);
+    for (const double t : {s.t_end}) {  // the order study's reference (certified once, then cached)
+      double loop = 0;
+      EXPECT_NEAR(energy_at(t, &loop), e0, 64 * eps * scale) << t;
+      EXPECT_LE(loop, 64 * eps * scale / s.gravity) << t;
+      EXPECT_GT((s.exact(t) - s.exact(0)).norm(), 0.1) << t;  // it has moved
+    }
+  }
+}
+
 TEST(multibody, a_reference_rk4_chain_engine_is_of_order_4_in_the_joint_coordinates) {
   const auto a = audit::audit_engine(chain_engine("chain::RK4", method::rk4, 4), on("double_pendulum"));
   ASSERT_EQ(a.scenarios.size(), 1u);

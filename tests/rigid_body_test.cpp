@@ -63,6 +63,21 @@ TEST(inertia_errors, valid_tensors_pass_after_a_shift) {
   EXPECT_EQ(classify(reference::box_inertia(1.0, 1.0, 2.0, 3.0)), top_kind::asymmetric);
 }
 
+TEST(inertia, a_prolate_and_an_oblate_body_are_symmetric_and_a_near_tie_is_judged_by_the_tolerance) {
+  // A long cylinder (r = 0.1, h = 2): I1 = m r^2 / 2 = 0.005 below I2 = I3 = m (3 r^2 + h^2) / 12
+  // (prolate); a flat one (r = 2, h = 1): I1 = I2 = 13/12 below I3 = 2 (oblate).
+  EXPECT_EQ(classify(reference::solid_cylinder_inertia(1.0, 0.1, 2.0)), top_kind::symmetric);
+  EXPECT_EQ(classify(reference::solid_cylinder_inertia(1.0, 2.0, 1.0)), top_kind::symmetric);
+  // Two moments apart by 64 eps I_max (the default tolerance is 64 eps I_max = 128 eps
+  // here): tied; by 200 eps: not, on either side of the middle moment.
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  for (const double apart : {64 * eps, 200 * eps}) {
+    const top_kind expected = apart < 128 * eps ? top_kind::symmetric : top_kind::asymmetric;
+    EXPECT_EQ(classify(M(V(1, 2, 2 + apart).asDiagonal())), expected) << apart / eps;
+    EXPECT_EQ(classify(M(V(1, 1 + apart, 2).asDiagonal())), expected) << apart / eps;
+  }
+}
+
 
 TEST(top_errors, free_body_moments) {
   EXPECT_EQ(message_of([] { free_rigid_body<double>(V(1, 0, 1)); }),

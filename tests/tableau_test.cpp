@@ -21,6 +21,7 @@
 #include "mechcheck/audit/tableau_file.hpp"
 #include "mechcheck/audit/verdicts.hpp"
 #include "mechcheck/integrators/gauss_legendre.hpp"
+#include "scratch.hpp"
 
 namespace tableau_test {
 using namespace mechcheck;
@@ -288,7 +289,8 @@ TEST(tableau_audit, the_steppers_of_the_files_have_their_orders_in_double) {
 
 /// Writes `text` to a temporary file and returns the tableau_error's message for it.
 std::string error_of(const std::string& text) {
-  const fs::path file = fs::temp_directory_path() / "mechcheck_tableau_test.json";
+  const mechcheck_test::scratch_directory scratch;
+  const fs::path file = scratch / "mechcheck_tableau_test.json";
   std::ofstream(file) << text;
   try {
     audit::read_tableau(file);
@@ -340,7 +342,8 @@ std::string gauss3_to(int digits) {
 }
 
 TEST(tableau_file, a_collocation_tableau_given_to_60_digits_holds_its_claims_to_60_digits) {
-  const fs::path file = fs::temp_directory_path() / "mechcheck_gauss3_60.json";
+  const mechcheck_test::scratch_directory scratch;
+  const fs::path file = scratch / "mechcheck_gauss3_60.json";
   std::ofstream(file) << gauss3_to(60);
   const auto t = audit::read_tableau(file);
   EXPECT_EQ(t.digits, 60);
@@ -366,7 +369,8 @@ TEST(tableau_file, a_collocation_tableau_given_to_60_digits_holds_its_claims_to_
 }
 
 TEST(tableau_file, claims_a_file_may_declare_are_judged_algebraically) {
-  const fs::path file = fs::temp_directory_path() / "mechcheck_claims.json";
+  const mechcheck_test::scratch_directory scratch;
+  const fs::path file = scratch / "mechcheck_claims.json";
   const auto analysis = [&](const std::string& extra) {
     // gauss2.json (its sqrt(3) in 100-digit decimals) with `extra` declared.
     std::ifstream in(dir / "gauss2.json");
@@ -405,7 +409,8 @@ TEST(tableau_file, claims_a_file_may_declare_are_judged_algebraically) {
 TEST(tableau_file, a_singular_implicit_block_is_accepted_and_its_stepper_runs) {
   // A = [[1, 1], [1, 1]]: both stages solve K = f(y + 2 h K), a contraction for small h;
   // the method is y + h K, K = f(y + 2 h K), of order 1.
-  const fs::path file = fs::temp_directory_path() / "mechcheck_singular.json";
+  const mechcheck_test::scratch_directory scratch;
+  const fs::path file = scratch / "mechcheck_singular.json";
   std::ofstream(file) << R"({"name": "singular", "A": [["1","1"],["1","1"]], "b": ["1/2","1/2"], "c": ["2","2"], "order": 1})";
   const auto t = audit::read_tableau(file);
   const auto a = audit::analyse(t);
@@ -439,7 +444,8 @@ TEST(tableau_audit, classifies_explicit_diagonally_implicit_and_implicit_by_the_
 }
 
 TEST(tableau_file, short_decimals_are_exact_and_a_long_one_sets_the_precision) {
-  const fs::path file = fs::temp_directory_path() / "mechcheck_decimals.json";
+  const mechcheck_test::scratch_directory scratch;
+  const fs::path file = scratch / "mechcheck_decimals.json";
   // Heun's method in decimals: 0.5 and 1.0 are exact.
   std::ofstream(file) << R"({"A": [["0","0"],["1.0","0"]], "b": ["0.5","0.5"], "c": ["0","1"], "order": 2})";
   auto t = audit::read_tableau(file);
@@ -599,6 +605,26 @@ TEST(tableau_file, exact_rationals_that_approximate_a_method_say_the_digits_they
   EXPECT_EQ(given.find("order")->result, outcome::to_precision_given) << audit::describe(given);
 }
 
+TEST(tableau_file, an_embedded_formula_given_in_decimals_holds_its_order_to_the_precision_given) {
+  // Bogacki-Shampine 3(2) with the method exact and the embedding's 7/24 and 1/3 written to
+  // 17 digits: the embedding's order 2 holds to the precision given (sum bhat - 1 = -3.3e-18,
+  // within 17 digits' rounding), not exactly; declared exact, the same digits contradict it.
+  const std::string text =
+      R"({"A": [["0","0","0","0"],["1/2","0","0","0"],["0","3/4","0","0"],["2/9","1/3","4/9","0"]],)"
+      R"( "b": ["2/9","1/3","4/9","0"], "c": ["0","1/2","3/4","1"], "order": 3,)"
+      R"( "bhat": ["0.29166666666666667","1/4","0.33333333333333333","1/8"], "embedding_order": 2})";
+  const auto t = audit::parse_tableau(text, "bs32");
+  EXPECT_EQ(t.digits, 17);
+  const auto a = audit::analyse(t);
+  EXPECT_EQ(a.find("order")->result, outcome::confirmed) << audit::describe(a);
+  EXPECT_EQ(a.find("embedding order")->result, outcome::to_precision_given) << audit::describe(a);
+  const auto exact = audit::analyse(audit::parse_tableau(std::string(text).insert(1, R"("precision": "exact", )"), "bs32"));
+  EXPECT_EQ(exact.find("embedding order")->result, outcome::contradicted) << audit::describe(exact);
+  // Its third-order conditions fail by order one: the embedding is of order 2, not 3.
+  ASSERT_TRUE(a.embedding);
+  EXPECT_GT(a.embedding->relative[2], 1e-3);
+}
+
 TEST(tableau_file, stage_order_in_both_definitions) {
   // The trapezoidal rule's A with b = (1, 0): C(2) holds, B(2) does not (b^T c = 0): stage
   // order 2 as C(q) alone, 1 with B(q) as well. Radau IIA 3: C(3) and B(5): 3 and 3.
@@ -675,7 +701,8 @@ TEST(stability, one_stage_methods_and_their_witnesses) {
 }
 
 TEST(stability, the_region_is_written_as_an_svg_per_tableau) {
-  const fs::path out = fs::temp_directory_path() / ("mechcheck-stability-" + std::to_string(::getpid()));
+  const mechcheck_test::scratch_directory scratch;
+  const fs::path out = scratch / "mechcheck-stability";
   const auto written = audit::write_tableau_report(
       out.string(), {audit::analyse(audit::read_tableau(dir / "radau_iia3.json")),
                      audit::analyse(audit::parse_tableau(R"({"name": "a/b c", "A": [["0"]], "b": ["1"], "c": ["0"]})", "x"))});

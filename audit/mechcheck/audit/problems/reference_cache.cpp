@@ -76,7 +76,11 @@ std::optional<certified_state> reference_cache::load(const std::string& key) con
   if (!in) return std::nullopt;
   try {
     const json doc = json::parse(in);
-    if (doc.at("key").get<std::string>() != key) return std::nullopt;  // a collision
+    if (doc.at("key").get<std::string>() != key) {  // an edited file or a hash collision
+      note_ = path.string() + " holds another key than the one asked for (an edited file or a hash collision): "
+              "the reference is computed";
+      return std::nullopt;
+    }
     certified_state out;
     out.x.q = vector_of(doc.at("q"));
     out.x.p = vector_of(doc.at("p"));
