@@ -2,10 +2,11 @@
 # The command's behaviour towards a newcomer (ctest: cli.command): names are checked and the
 # valid ones listed, the report goes where -o says, a batch goes on past a bad input and the
 # exit status says so, --list lists every kind, --help names the installed tableaus.
-# Usage: command_test.sh MECHCHECK_AUDIT SOURCE_DIR
+# Usage: command_test.sh MECHCHECK_AUDIT SOURCE_DIR EXEC_CHILD
 set -uo pipefail
 audit=$1
 source_dir=$2
+child=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failed=0
@@ -58,6 +59,17 @@ expect 0 "audited 1 stepper-tier pairs" --tableau "$work/heun.json" --require '*
 printf '{"A": [["1/2"]], "b": ["1"], "c": ["1/2"], "symplectc": true}' > "$work/typo.json"
 expect 1 "has the field \"symplectc\", which a tableau file does not have .*symplectic" --tableau "$work/typo.json" \
   -t double -p oscillator --long-run-steps 0 -q -o "$work/typo"
+# --require-measured: a child that refuses the scenario asked for (the test engine builds hinge
+# pendulums only) measured nothing and fails the gate, naming the scenario and its words; on a
+# pendulum it passes. Without the flag the refusal is a row of the report, status 0.
+expect 2 "exec::test_engine/engine::euler: not measured: free_top: refused: this engine builds hinge pendulums only" \
+  --exec-engine --scenario free_top --engine-long-run-steps 0 --require-measured '*' -q -o "$work/refuses" -- "$child" engine
+expect 0 "audited 3 engine integrators" --exec-engine --scenario free_top --engine-long-run-steps 0 -q \
+  -o "$work/refuses" -- "$child" engine
+expect 0 "audited 3 engine integrators" --exec-engine --scenario pendulum_small --engine-long-run-steps 1000 \
+  --require-measured '*' -q -o "$work/measures" -- "$child" engine
+grep -q '"scenario": "pendulum_small"' "$work/measures/engines.json" ||
+  { echo "FAILED: the measured run's report lacks its scenario"; failed=1; }
 # --list names every kind; --help names the tableaus.
 for section in "steppers \([0-9]+;" "adaptive drivers \([0-9]+;" "engine integrators \([0-9]+;" \
                "engine scenarios \(14;" "problems \([0-9]+;"; do

@@ -135,13 +135,15 @@ int main(int argc, char** argv) {
   app.footer("Exit status: 0 all audited; 1 an input refused (the others are still audited and written); "
              "2 a claim --require names is contradicted (a stepper's or engine integrator's measured claim, or "
              "a tableau file's algebraic one: order, embedding order, stage order, symplectic, symmetric); "
+             "2 also when a target --require-measured names measured nothing of a problem or scenario it was "
+             "audited on (refused, skipped, or every run failed); "
              "3 a child failed during the audit.\n"
              "The classical tableaus (--tableau): " + tableau_directory());
   std::vector<std::string> steppers, problems, tiers = {"double", "mpfr50"};
   std::vector<std::string> long_run_problems = {"kepler_e0.5"};
   long long long_run_steps = 100000, long_run_steps_mpfr50 = 10000;
   std::string output;
-  std::vector<std::string> require;
+  std::vector<std::string> require, require_measured;
   bool timing = false, list = false, quiet = false;
   app.add_option("-s,--stepper", steppers,
                  "steppers to audit, as shell patterns on their names "
@@ -173,6 +175,11 @@ int main(int argc, char** argv) {
                  "exit with status 2 when a claim of a stepper or engine integrator matching this pattern is "
                  "contradicted, a tableau file's algebraic claims included (tableau::<name>; e.g. 'mechcheck::*'; "
                  "'*' for all)");
+  app.add_option("--require-measured", require_measured,
+                 "exit with status 2 when a stepper, adaptive driver or engine integrator matching this pattern "
+                 "measured nothing of a problem or scenario it was audited on (it refused or skipped it, or every "
+                 "run failed): a gate that cannot pass on a target that measured nothing (name the problems or "
+                 "scenarios it must measure with -p or --scenario)");
   app.add_flag("-q,--quiet", quiet, "no progress on stderr");
   double newton_tolerance = 0;
   app.add_option("--newton-tolerance", newton_tolerance,
@@ -217,7 +224,8 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     for (const auto& [option, patterns] : {std::pair{"--stepper", &steppers}, std::pair{"--driver", &driver_patterns},
-                                           std::pair{"--engine", &engine_patterns}, std::pair{"--require", &require}})
+                                           std::pair{"--engine", &engine_patterns}, std::pair{"--require", &require},
+                                           std::pair{"--require-measured", &require_measured}})
       for (const auto& p : *patterns) audit_tool::check_pattern(option, p);
   } catch (const error& e) {
     std::cerr << "mechcheck-audit: " << e.what() << "\n";
@@ -247,6 +255,14 @@ int main(int argc, char** argv) {
   const auto progress = [&](const std::string& what) { std::fprintf(stderr, "[%7.1f s] %s\n", elapsed(), what.c_str()); };
   int status = 0;  // the largest of 1 (an input refused), 2 (a required claim contradicted), 3 (a child failed)
   const auto raise = [&status](int s) { status = std::max(status, s); };
+  // --require-measured: a target it names that measured nothing of what it was audited on.
+  const auto require_measured_of = [&](const std::string& name, const std::vector<std::string>& missing) {
+    if (missing.empty() || !audit_tool::matches_any(require_measured, name)) return;
+    std::cerr << "mechcheck-audit: " << name << ": not measured:";
+    for (std::size_t k = 0; k < missing.size(); ++k) std::cerr << (k ? "; " : " ") << missing[k];
+    std::cerr << "\n";
+    raise(2);
+  };
   // Writes a report by `write` and names its files; false (with the reason) on failure.
   const auto report_files = [&](const auto& write) {
     try {
@@ -371,6 +387,10 @@ int main(int argc, char** argv) {
     std::vector<std::string> everything = all_steppers;
     for (const auto& n : names_of(all_engines)) everything.push_back(n);
     if (!child_refused) ok = every_pattern_matches("--require", "stepper or engine integrator", require, everything) && ok;
+    for (const auto& n : names_of(all_drivers)) everything.push_back(n);
+    if (!child_refused)
+      ok = every_pattern_matches("--require-measured", "stepper, adaptive driver or engine integrator", require_measured,
+                                 everything) && ok;
     if (!ok) return 1;
   }
   if (child_refused && steppers.empty() && tableau_files.empty() &&
@@ -404,11 +424,13 @@ int main(int argc, char** argv) {
     if (!report_files([&] { return audit::write_engine_report(output, engine_audits, shape_audits); })) return 1;
     std::cout << "audited " << engine_audits.size() << " engine integrators in " << static_cast<long>(elapsed() + 0.5)
               << " s\n";
-    for (const auto& a : engine_audits)
+    for (const auto& a : engine_audits) {
       if (!a.claims_hold() && audit_tool::matches_any(require, a.integrator)) {
         std::cerr << "mechcheck-audit: " << a.integrator << ": a declared claim is contradicted (see the table)\n";
         raise(2);
       }
+      require_measured_of(a.integrator, a.unmeasured());
+    }
     if (steppers.empty() && tableau_files.empty() && driver_patterns.empty() && exec_targets.empty()) {
       for (const auto& t : exec_engines)
         if (t.failures() > 0) {
@@ -433,6 +455,7 @@ int main(int argc, char** argv) {
     if (!quiet) dopt.progress = progress;
     for (const auto& d : drivers) driver_audits.push_back(audit::audit_driver(d, dopt));
     audit::print_drivers(std::cout, driver_audits);
+    for (const auto& a : driver_audits) require_measured_of(a.driver, a.unmeasured());
     if (!quiet) std::fprintf(stderr, "[%7.1f s] drivers done in %.1f s\n", elapsed(), elapsed() - t0);
   }
   const auto child_failures = [&] {
@@ -492,11 +515,13 @@ int main(int argc, char** argv) {
   });
   if (!wrote) return 1;
   std::cout << "audited " << audits.size() << " stepper-tier pairs in " << static_cast<long>(elapsed() + 0.5) << " s\n";
-  for (const auto& a : audits)
+  for (const auto& a : audits) {
     if (!a.claims_hold() && audit_tool::matches_any(require, a.stepper)) {
       std::cerr << "mechcheck-audit: " << a.stepper << " [" << a.tier << "]: a declared claim is contradicted (see the table)\n";
       raise(2);
     }
+    require_measured_of(a.stepper, a.unmeasured());
+  }
   // A tableau file's algebraic claims (the stage order is one no stepper carries).
   for (const auto& a : analyses) {
     if (!audit_tool::matches_any(require, "tableau::" + a.name)) continue;

@@ -29,6 +29,7 @@
 /// GSL's gsl_odeiv2_driver (gsl.hpp) and SUNDIALS CVODE and ARKODE (arkode.hpp) where
 /// found.
 
+#include <algorithm>
 #include <functional>
 #include <optional>
 #include <iosfwd>
@@ -98,6 +99,16 @@ struct driver_audit {
   double seconds = 0;
   /// True when no claim is contradicted.
   bool claims_hold() const { return error_control.result != verdict::outcome::contradicted; }
+  /// The problems on which every run failed, each with the last failure: --require-measured.
+  std::vector<std::string> unmeasured() const {
+    std::vector<std::string> out;
+    for (const auto& p : problems)
+      if (std::all_of(p.points.begin(), p.points.end(), [](const driver_point& x) { return !x.failure.empty(); }))
+        out.push_back(p.problem + ": every run failed" +
+                      (p.points.empty() ? std::string() : " (" + p.points.back().failure + ")"));
+    if (problems.empty()) out.emplace_back("no problem");
+    return out;
+  }
 };
 
 struct driver_options {

@@ -291,6 +291,21 @@ struct engine_audit {
   std::vector<verdict> order_by_class;
   verdict symplectic;  ///< |det - 1| against its resolution on the hinge scenarios
   verdict energy;      ///< the long runs' energy growth against a declared behaviour
+  /// The scenarios it was audited on and measured nothing of, each with why ("kepler:
+  /// refused: ...", "boxes: failed: ..."): --require-measured.
+  std::vector<std::string> unmeasured() const {
+    std::vector<std::string> out;
+    const auto own = [this](std::string why) {  // the integrator's name is said once, before the list
+      if (why.rfind(integrator + ": ", 0) == 0) why.erase(0, integrator.size() + 2);
+      return why;
+    };
+    for (const auto& s : scenarios) {
+      if (!s.refused.empty()) out.push_back(s.scenario + ": refused: " + own(s.refused));
+      else if (!s.failure.empty()) out.push_back(s.scenario + ": failed: " + own(s.failure));
+    }
+    if (scenarios.empty()) out.emplace_back("no scenario");
+    return out;
+  }
   /// True when no declared claim is contradicted.
   bool claims_hold() const {
     for (const verdict* v : {&order, &symplectic, &energy})

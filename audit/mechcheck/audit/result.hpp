@@ -263,6 +263,20 @@ struct stepper_audit {
       if (v.result == verdict::outcome::contradicted) return false;
     return true;
   }
+  /// What it was audited on and measured nothing of, each with why ("pendulum: skipped:
+  /// ...", "kepler_e0.5: no run of its order studies succeeded (...)"): --require-measured.
+  std::vector<std::string> unmeasured() const {
+    std::vector<std::string> out;
+    for (const auto& p : problems) {
+      if (!p.skipped.empty())
+        out.push_back(p.problem + ": skipped: " + p.skipped);
+      else if (p.global.points.empty() && p.local.points.empty())
+        out.push_back(p.problem + ": no run of its order studies succeeded" +
+                      (p.global.note.empty() ? std::string() : " (" + p.global.note + ")"));
+    }
+    if (problems.empty()) out.emplace_back("no problem");
+    return out;
+  }
   const verdict* find(const std::string& claim) const {
     for (const auto& v : verdicts)
       if (v.claim == claim) return &v;
