@@ -125,6 +125,8 @@ TEST(exec, a_crash_an_exit_and_a_broken_reply_are_typed_errors_naming_the_comman
   EXPECT_NE(exit.find("its standard error ends: \"giving up\""), std::string::npos) << exit;
   EXPECT_NE(first_step_error("malformed").find("the reply is not JSON: \"not json\""), std::string::npos);
   EXPECT_NE(first_step_error("oversized").find("longer than 1048576 bytes"), std::string::npos);
+  const std::string extra = first_step_error("extra_field");
+  EXPECT_NE(extra.find("the reply: the field \"yy\" is not one of version 1's (y)"), std::string::npos) << extra;
 }
 
 TEST(exec, a_non_finite_state_is_a_diverged_run_and_the_child_goes_on) {

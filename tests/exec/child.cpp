@@ -304,6 +304,10 @@ int main(int argc, char** argv) {
       continue;
     }
     vec y = nums(r["y"]);
+    if (mode == "extra_field") {  // a field version 1 does not have: a protocol breach
+      send({{"y", hexes(y)}, {"yy", hexes(y)}});
+      continue;
+    }
     if (mode == "nan") {
       y[0] = std::nan("");
       send({{"y", hexes(y)}});

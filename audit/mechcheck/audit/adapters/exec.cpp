@@ -663,7 +663,10 @@ void step_run(double* y, double t, double h, void* ctx) {
                            r.diverged + ")");
   if (const auto e = reply.find("error"); e != reply.end())
     throw convergence_error(r.s->prefix() + what + ": the stepper failed: " + error_text(*e));
-  const std::string bad = checked(*r.s, what, [&] { return numbers_into(reply, "y", n, y, "the reply", false); });
+  const std::string bad = checked(*r.s, what, [&] {
+    only_known_fields(reply, {"y"}, "the reply");
+    return numbers_into(reply, "y", n, y, "the reply", false);
+  });
   if (!bad.empty())
     throw non_finite_error(r.s->prefix() + what + ": the stepper returned a non-finite state (" + bad + ")");
 }
@@ -730,6 +733,7 @@ driver_statistics integrate_run(const std::shared_ptr<session>& s, const ode_sys
   driver_statistics stats;
   try {
     checked(*s, what, [&] {
+      only_known_fields(reply, {"y", "accepted", "rejected"}, "the reply");
       numbers_into(reply, "y", n, y, "the reply");
       for (const char* key : {"accepted", "rejected"})
         if (const auto it = reply.find(key); it != reply.end()) {
