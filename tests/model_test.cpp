@@ -192,13 +192,14 @@ TEST(Model, BadInputIsATypedErrorNamingTheModelAndTheValue) {
                audit::model_error);
 }
 
-/// A particle in the plane held on the unit circle by the constraint |q|^2 - 1 = 0 (the
+/// A particle in the plane held on the circle |q|^2 - r2 = 0, the unit one by default (the
 /// model: a free particle; only the start is checked against the declared manifold).
 struct on_circle {
+  int r2 = 1;  ///< the radius squared (an integer: exact in every tier)
   template <class S>
   dynamic_vector<S> operator()(const dynamic_vector<S>& q) const {
     dynamic_vector<S> g(1);
-    g(0) = q(0) * q(0) + q(1) * q(1) - lift<S>(real_type_t<S>(1));
+    g(0) = q(0) * q(0) + q(1) * q(1) - lift<S>(real_type_t<S>(r2));
     return g;
   }
 };
@@ -236,18 +237,8 @@ struct heavy_particle {
   }
 };
 
-/// The circle |q| = 5, through q = (3, 4) (exact in every tier).
-struct on_circle_of_5 {
-  template <class S>
-  dynamic_vector<S> operator()(const dynamic_vector<S>& q) const {
-    dynamic_vector<S> g(1);
-    g(0) = q(0) * q(0) + q(1) * q(1) - lift<S>(real_type_t<S>(25));
-    return g;
-  }
-};
-
 TEST(Model, AConstrainedStartIsJudgedByItsVelocityNotItsMomentum) {
-  // On the circle |q| = 5 at q = (3, 4), tangent t = (-4, 3). Momenta p = M t = (-8, 9) move
+  // On the circle |q| = 5 (exact in every tier) at q = (3, 4), tangent t = (-4, 3). Momenta p = M t = (-8, 9) move
   // the particle along t (qdot = t): accepted, though p is not tangent. Momenta p = t give
   // qdot = (-2, 1), which leaves the circle (d|q|^2/dt = 2 q . qdot = -4): refused, though p
   // is tangent.
@@ -255,10 +246,10 @@ TEST(Model, AConstrainedStartIsJudgedByItsVelocityNotItsMomentum) {
   s.q0 = {"3", "4"};
   s.constraint_names = {"|q|^2 - 25"};
   s.p0 = {"-8", "9"};
-  const audit::hamiltonian_model<heavy_particle, audit::no_integrals, on_circle_of_5> along{s, {}, {}, {}};
+  const audit::hamiltonian_model<heavy_particle, audit::no_integrals, on_circle> along{s, {}, {}, {25}};
   EXPECT_NO_THROW(static_cast<void>(audit::model_problem<double>(along, fresh_settings("heavy1"))));
   s.p0 = {"-4", "3"};
-  const audit::hamiltonian_model<heavy_particle, audit::no_integrals, on_circle_of_5> off{s, {}, {}, {}};
+  const audit::hamiltonian_model<heavy_particle, audit::no_integrals, on_circle> off{s, {}, {}, {25}};
   try {
     static_cast<void>(audit::model_problem<double>(off, fresh_settings("heavy2")));
     ADD_FAILURE() << "a velocity leaving the manifold was accepted";
