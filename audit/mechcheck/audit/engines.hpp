@@ -33,6 +33,7 @@
 
 #include <Eigen/Core>
 
+#include "mechcheck/audit/problems/scenarios.hpp"
 #include "mechcheck/audit/result.hpp"
 #include "mechcheck/core.hpp"
 
@@ -44,129 +45,6 @@ class scenario_refused : public error {
   using error::error;
 };
 
-/// The scenarios (their parameters are fixed: see scenarios()).
-enum class scenario_kind {
-  free_top,            ///< asymmetric free body, no gravity: body angular velocity
-  free_top_near_axis,  ///< the same near the intermediate axis (flips)
-  boxes,               ///< gazebo-classic's benchmark box near its intermediate axis
-  free_symmetric_top,  ///< symmetric free body: body angular velocity and symmetry axis
-  heavy_top,           ///< symmetric top on a fixed point in steady precession
-  heavy_top_nutation,  ///< the same top nutating from a turning point
-  pendulum_small,      ///< hinge pendulum, amplitude 0.1 rad: angle and rate
-  pendulum_large,      ///< hinge pendulum, amplitude 2.5 rad
-  projectile,          ///< free body in uniform gravity: position and velocity
-  kepler,              ///< point mass under a central inverse-square force
-  double_pendulum,     ///< two links hinged about y: joint angles and rates
-  chain5,              ///< five links hinged about y
-  four_bar,            ///< a chain of three bars closed on the ground (a loop)
-  three_body,          ///< three free bodies under their mutual gravitation
-};
-
-/// How a scenario's bodies are put together.
-enum class body_structure {
-  one_body,     ///< the scenario's own body (its fields below), held by `joint`
-  chain,        ///< `links`, each hinged about world y to the one before (link 0 to the world)
-  free_bodies,  ///< `links`, free, under their mutual gravitation
-};
-
-/// One body of a multibody scenario: mass, principal moments about its centre of mass
-/// along its frame's axes (the world's at zero angles), centre of mass `com` in its frame.
-/// In a chain the frame's origin is the link's hinge, at `hinge` in the parent link's frame
-/// (link 0: in the world); its state at t = 0 is the joint's angle `angle0` about y from
-/// the parent's frame, and rate `rate0`. A free body's frame origin is its centre of mass,
-/// its state at t = 0 position0 and velocity0 (no rotation).
-struct link {
-  double mass = 1;
-  Eigen::Vector3d inertia{1, 1, 1};
-  Eigen::Vector3d com{0, 0, 0};
-  Eigen::Vector3d hinge{0, 0, 0};
-  double angle0 = 0, rate0 = 0;
-  Eigen::Vector3d position0{0, 0, 0}, velocity0{0, 0, 0};
-};
-
-/// A chain's last link hinged about y to the world as well: its point `point` (its frame)
-/// at the world point `anchor`.
-struct loop_closure {
-  Eigen::Vector3d point{0, 0, 0}, anchor{0, 0, 0};
-};
-
-/// How the scenario's body is held.
-enum class joint_kind {
-  free,     ///< six degrees of freedom; the body frame's origin is the centre of mass
-  hinge_y,  ///< a hinge about world y through the world origin (the pivot)
-  ball,     ///< a ball joint at the world origin (the pivot)
-};
-
-/// A scenario: one rigid body in engine-neutral terms every adapter maps to its engine,
-/// and the exact reference of its observables.
-///
-/// The body: mass m, principal moments `inertia` about its centre of mass along the body
-/// axes. For a jointed body the body frame's origin is the pivot (the world origin) and the
-/// centre of mass is at `com` in the body frame; for a free body com = 0. World z is up;
-/// gravity is |g| along -z; `central` k adds the force -m k x / |x|^3 on the centre of
-/// mass at x (the Kepler problem's attraction to the origin, evaluated where the engine
-/// evaluates forces).
-/// The state at t = 0: orientation rotation0 (body to world), centre of mass position0 and
-/// velocity0, angular velocity omega0 in the world frame (consistent with the joint).
-struct scenario {
-  scenario_kind kind;
-  std::string name, description;
-  body_structure structure = body_structure::one_body;
-  std::vector<link> links;          ///< chain and free bodies
-  std::optional<loop_closure> loop;  ///< a chain closed on the ground
-  double gravitation = 0;           ///< G between free bodies: force G m_i m_j / r^2
-  joint_kind joint = joint_kind::free;
-  double mass = 1;
-  Eigen::Vector3d inertia{1, 1, 1};
-  Eigen::Vector3d com{0, 0, 0};
-  double gravity = 0;
-  double central = 0;
-  Eigen::Matrix3d rotation0 = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d position0{0, 0, 0}, velocity0{0, 0, 0}, omega0{0, 0, 0};
-  double t_end = 1;              ///< time of the order study
-  long steps0 = 16;              ///< its coarsest run
-  double h_long = 0.01;          ///< step of the long run
-  /// The scenario's own time scale: the period of its slowest motion where it has one, else
-  /// the order study's span (said where it is set). The long run's growth classes are
-  /// fitted past one of it and need ten (studies.hpp, classify_growth).
-  double time_scale = 1;
-  bool conserves_energy = true;
-  /// Angular momentum about the world origin conserved: every component, or only its
-  /// vertical one (a top on a fixed point under gravity).
-  enum class momentum_law { none, vector, vertical } momentum = momentum_law::none;
-  /// The observables at time t (exact) and their scale.
-  std::function<Eigen::VectorXd(double)> exact;
-  double scale = 1;
-  /// The classes of the observables: a name ("orientation", "angular velocity", "joint
-  /// coordinates", "position", "velocity") and the range [first, first + count) of the
-  /// observables it holds. The order is measured and judged per class.
-  struct observable_class {
-    std::string name;
-    int first = 0, count = 0;
-  };
-  std::vector<observable_class> classes;
-};
-
-/// The scenarios every engine is asked for.
-std::vector<scenario> scenarios();
-
-/// A hinge scenario (pendulum) started at angle theta and rate thetadot instead of its own
-/// initial state: the map of one step in (theta, thetadot) for the Jacobian study.
-scenario with_hinge_state(scenario s, double theta, double thetadot);
-
-/// Moment of inertia of a hinge scenario's body about its hinge: m |com|^2 + I_yy.
-double hinge_inertia(const scenario& s);
-
-/// A body's frame: orientation (body to world), centre of mass position and velocity,
-/// angular velocity in the world frame.
-struct body_frame {
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d position{0, 0, 0}, velocity{0, 0, 0}, omega{0, 0, 0};
-};
-
-/// The frames of a chain's links at joint angles and rates (relative, as link::angle0 and
-/// rate0): what an engine in body coordinates starts from.
-std::vector<body_frame> chain_frames(const scenario& s, const Eigen::VectorXd& angles, const Eigen::VectorXd& rates);
 
 /// The body's state as an engine reports it (the frame above is the one-body scenario's).
 struct body_reading : body_frame {
@@ -326,22 +204,6 @@ struct engine_options {
 
 engine_audit audit_engine(const engine_integrator& integrator, const engine_options& opt = {});
 
-/// A uniform solid, centred at the body origin, its axis (cylinder, capsule, cone) along z;
-/// or a compound body: two solid spheres of radius r and mass m/2 centred at (+-d, 0, 0).
-struct shape {
-  std::string name;  ///< box, sphere, cylinder, capsule, cone, ellipsoid, two_spheres
-  double mass = 1;
-  /// box: edges; sphere: (r); cylinder, cone: (r, height); capsule: (r, length of its
-  /// cylinder); ellipsoid: semi-axes; two_spheres: (r, d).
-  Eigen::Vector3d size{0, 0, 0};
-};
-
-/// The shapes every engine is asked for.
-std::vector<shape> shapes();
-
-/// A shape's principal moments about its centre of mass, ascending, from reference/solids.hpp
-/// (and the parallel-axis theorem, eq 160, for the compound) in mpfr50.
-Eigen::Vector3d exact_principal_moments(const shape& s);
 
 /// How an engine computes the inertia of its shapes from mass and dimensions.
 struct engine_shapes {
