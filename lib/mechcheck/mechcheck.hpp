@@ -9,4 +9,5 @@
 #include "mechcheck/models.hpp"
 #include "mechcheck/integrators.hpp"
 #include "mechcheck/rigid_body.hpp"
+#include "mechcheck/robots.hpp"
 #include "mechcheck/central.hpp"

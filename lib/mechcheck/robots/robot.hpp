@@ -1,0 +1,205 @@
+#pragma once
+/// A robot as URDF describes one: a kinematic tree of links joined by revolute, continuous,
+/// prismatic and fixed joints, under uniform gravity (notes lectures 1-3 for its Lagrangian,
+/// 13-16 for the links' inertia). The numbers are doubles, as a file gives them; the
+/// dynamics (robots/dynamics.hpp) compute with them in any tier.
+///
+/// URDF's conventions, kept here:
+///  - a pose is a translation xyz and fixed-axis roll, pitch, yaw: R = Rz(yaw) Ry(pitch)
+///    Rx(roll);
+///  - a joint's origin is the child link's frame in its parent's at q = 0; the joint moves
+///    the child about (revolute, continuous) or along (prismatic) its axis, a unit vector in
+///    the joint frame (the child's);
+///  - a link's inertia tensor is about its centre of mass, in the frame turned by its
+///    inertial origin's rpy, which is at the centre of mass.
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "mechcheck/core.hpp"
+#include "mechcheck/rigid_body/inertia.hpp"
+
+namespace mechcheck::robots {
+
+/// A robot description that is not one: the message names the link or joint and the value.
+class robot_error : public domain_error {
+ public:
+  using domain_error::domain_error;
+};
+
+/// Translation (m) and roll-pitch-yaw (rad) of a frame in its parent frame.
+struct pose {
+  Eigen::Vector3d xyz{0, 0, 0};
+  Eigen::Vector3d rpy{0, 0, 0};
+};
+
+/// A link's mass (kg), its centre of mass and inertia frame (origin), and its inertia
+/// tensor about the centre of mass in that frame (kg m^2; URDF's ixx ... izz).
+struct inertial {
+  double mass = 0;
+  pose origin;
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+};
+
+struct link {
+  std::string name;
+  std::optional<inertial> body;  ///< none: a massless link (a frame)
+};
+
+enum class joint_type { revolute, continuous, prismatic, fixed };
+
+/// URDF's name of a joint type ("revolute", ...).
+inline const char* joint_type_name(joint_type t) {
+  switch (t) {
+    case joint_type::revolute: return "revolute";
+    case joint_type::continuous: return "continuous";
+    case joint_type::prismatic: return "prismatic";
+    case joint_type::fixed: return "fixed";
+  }
+  return "?";
+}
+
+struct joint {
+  std::string name;
+  joint_type type = joint_type::revolute;
+  std::string parent, child;  ///< link names
+  pose origin;                ///< the child's frame in the parent's at q = 0
+  Eigen::Vector3d axis{1, 0, 0};  ///< unit vector in the joint (child) frame; unused when fixed
+};
+
+struct robot {
+  std::string name = "robot";
+  std::vector<link> links;
+  std::vector<joint> joints;
+  Eigen::Vector3d gravity{0, 0, -9.81};  ///< uniform gravitational acceleration, world frame (m/s^2)
+};
+
+/// A validated robot's tree: its root link (fixed to the world at the world's frame), the
+/// joints in an order that puts each parent before its children, and each joint's
+/// coordinate (-1 for a fixed joint). Coordinates are numbered in the joints' order in the
+/// description (URDF's order), moving joints only.
+struct tree {
+  int root = 0;                      ///< index into robot::links
+  std::vector<int> order;            ///< joint indices, parents first
+  std::vector<int> coordinate;       ///< per joint (description order): its q index or -1
+  std::vector<int> child_link;       ///< per joint: index of its child link
+  std::vector<int> parent_link;      ///< per joint: index of its parent link
+  int dofs = 0;
+};
+
+namespace detail {
+inline std::string vector_text(const Eigen::Vector3d& v) {
+  return "(" + to_text(v(0)) + ", " + to_text(v(1)) + ", " + to_text(v(2)) + ")";
+}
+inline void require_finite_pose(const pose& p, const std::string& where) {
+  for (int i = 0; i < 3; ++i) {
+    if (!std::isfinite(p.xyz(i))) throw non_finite_error(where + ": origin xyz " + vector_text(p.xyz) + " is not finite");
+    if (!std::isfinite(p.rpy(i))) throw non_finite_error(where + ": origin rpy " + vector_text(p.rpy) + " is not finite");
+  }
+}
+}  // namespace detail
+
+/// Checks a description and returns its tree. Throws robot_error naming the link or joint
+/// and the value for: no links, a repeated name, a joint whose parent or child is not a
+/// link, a link with two parents, a loop, more than one root; a moving link's mass <= 0;
+/// an inertia tensor that is not symmetric, not positive semi-definite or violates the
+/// triangle inequality I1 + I2 >= I3 (notes eqs 154-156; tolerance 64 eps |I|); an axis
+/// that is zero or not of unit length (to 1e-9, URDF writes axes to a few digits); and
+/// non_finite_error for a number that is not finite.
+inline tree validate(const robot& r) {
+  const std::string who = "robot " + r.name;
+  if (r.links.empty()) throw robot_error(who + ": no links");
+  for (int i = 0; i < 3; ++i)
+    if (!std::isfinite(r.gravity(i))) throw non_finite_error(who + ": gravity " + detail::vector_text(r.gravity) + " is not finite");
+  const auto link_index = [&](const std::string& name) {
+    for (std::size_t i = 0; i < r.links.size(); ++i)
+      if (r.links[i].name == name) return static_cast<int>(i);
+    return -1;
+  };
+  for (std::size_t i = 0; i < r.links.size(); ++i) {
+    if (r.links[i].name.empty()) throw robot_error(who + ": link " + std::to_string(i) + " has no name");
+    if (link_index(r.links[i].name) != static_cast<int>(i)) throw robot_error(who + ": two links named " + r.links[i].name);
+  }
+  tree t;
+  const std::size_t nl = r.links.size(), nj = r.joints.size();
+  std::vector<int> parent_joint(nl, -1);
+  t.coordinate.assign(nj, -1);
+  t.child_link.assign(nj, -1);
+  t.parent_link.assign(nj, -1);
+  for (std::size_t j = 0; j < nj; ++j) {
+    const joint& jt = r.joints[j];
+    const std::string where = who + ": joint " + (jt.name.empty() ? std::to_string(j) : jt.name);
+    if (jt.name.empty()) throw robot_error(where + " has no name");
+    for (std::size_t k = 0; k < j; ++k)
+      if (r.joints[k].name == jt.name) throw robot_error(who + ": two joints named " + jt.name);
+    const int p = link_index(jt.parent), c = link_index(jt.child);
+    if (p < 0) throw robot_error(where + ": its parent \"" + jt.parent + "\" is not a link");
+    if (c < 0) throw robot_error(where + ": its child \"" + jt.child + "\" is not a link");
+    if (p == c) throw robot_error(where + ": link " + jt.child + " is its own parent");
+    if (parent_joint[std::size_t(c)] >= 0)
+      throw robot_error(where + ": link " + jt.child + " already has a parent (joint " +
+                        r.joints[std::size_t(parent_joint[std::size_t(c)])].name + "): a robot is a tree");
+    parent_joint[std::size_t(c)] = static_cast<int>(j);
+    t.child_link[j] = c;
+    t.parent_link[j] = p;
+    detail::require_finite_pose(jt.origin, where);
+    if (jt.type != joint_type::fixed) {
+      if (!jt.axis.allFinite()) throw non_finite_error(where + ": axis " + detail::vector_text(jt.axis) + " is not finite");
+      if (!(std::abs(jt.axis.norm() - 1) <= 1e-9))
+        throw robot_error(where + ": axis " + detail::vector_text(jt.axis) + " is not a unit vector (length " +
+                          to_text(jt.axis.norm()) + ")");
+      t.coordinate[j] = t.dofs++;
+    }
+  }
+  int roots = 0;
+  for (std::size_t i = 0; i < nl; ++i)
+    if (parent_joint[i] < 0) {
+      if (roots++ > 0)
+        throw robot_error(who + ": links " + r.links[std::size_t(t.root)].name + " and " + r.links[i].name +
+                          " both have no parent: a robot has one root");
+      t.root = static_cast<int>(i);
+    }
+  if (roots == 0) throw robot_error(who + ": every link has a parent: the joints form a loop");
+  // Parents first: breadth-first from the root; a joint not reached lies on a loop.
+  std::vector<int> frontier{t.root};
+  while (!frontier.empty()) {
+    std::vector<int> next;
+    for (int l : frontier)
+      for (std::size_t j = 0; j < nj; ++j)
+        if (t.parent_link[j] == l) {
+          t.order.push_back(static_cast<int>(j));
+          next.push_back(t.child_link[j]);
+        }
+    frontier = std::move(next);
+  }
+  if (t.order.size() != nj)
+    for (std::size_t j = 0; j < nj; ++j)
+      if (std::find(t.order.begin(), t.order.end(), static_cast<int>(j)) == t.order.end())
+        throw robot_error(who + ": joint " + r.joints[j].name + " lies on a loop (not reached from the root " +
+                          r.links[std::size_t(t.root)].name + ")");
+  for (std::size_t i = 0; i < nl; ++i) {
+    const link& l = r.links[i];
+    if (!l.body) continue;
+    const std::string where = who + ": link " + l.name;
+    detail::require_finite_pose(l.body->origin, where + " inertial");
+    if (!std::isfinite(l.body->mass)) throw non_finite_error(where + ": mass " + to_text(l.body->mass) + " is not finite");
+    if (l.body->mass < 0) throw robot_error(where + ": mass " + to_text(l.body->mass) + " is negative");
+    if (parent_joint[i] >= 0 && !(l.body->mass > 0))
+      throw robot_error(where + ": mass " + to_text(l.body->mass) + " on a moving link must be positive");
+    try {
+      validate_inertia(matrix3<double>(l.body->inertia), where);
+    } catch (const non_finite_error&) {
+      throw;
+    } catch (const domain_error& e) {
+      throw robot_error(e.what());
+    }
+  }
+  return t;
+}
+
+}  // namespace mechcheck::robots
