@@ -298,4 +298,102 @@ rc::Gen<model_case> closed_particle_cases() {
   });
 }
 
+
+namespace {
+/// 2^k for k drawn in [lo, hi], shrinking towards 2^0.
+rc::Gen<double> power_of_two(int lo, int hi) {
+  return rc::gen::exec([lo, hi] {
+    const bool down = *rc::gen::arbitrary<bool>();
+    return std::ldexp(1.0, down ? -*int_with_ends(0, -lo) : *int_with_ends(0, hi));
+  });
+}
+Eigen::Vector3d draw_triple(const rc::Gen<double>& g) { return {*g, *g, *g}; }
+}  // namespace
+
+rc::Gen<robots::robot> random_robots(int max_links) {
+  return rc::gen::exec([max_links] {
+    robots::robot r;
+    r.name = "random";
+    r.links.push_back({"base", std::nullopt});
+    const int n = *rc::gen::inRange(1, max_links + 1);
+    for (int i = 1; i <= n; ++i) {
+      robots::joint j;
+      j.name = "joint" + std::to_string(i);
+      // A chain unless a tree is drawn: parent i - 1 - back, back shrinking to 0.
+      const int back = *rc::gen::weightedOneOf<int>({{3, rc::gen::just(0)}, {1, rc::gen::inRange(0, i)}});
+      j.parent = r.links[std::size_t(i - 1 - back)].name;
+      j.child = "link" + std::to_string(i);
+      j.type = *rc::gen::weightedElement<robots::joint_type>({{6, robots::joint_type::revolute},
+                                                               {1, robots::joint_type::continuous},
+                                                               {2, robots::joint_type::prismatic},
+                                                               {1, robots::joint_type::fixed}});
+      const int along = *rc::gen::weightedElement<int>({{1, 2}, {1, 0}, {1, 1}, {3, 3}});
+      if (along < 3) {
+        j.axis = Eigen::Vector3d::Unit(along);
+      } else {
+        const std::vector<double> d = *directions();
+        j.axis = Eigen::Vector3d(d[0], d[1], d[2]).normalized();
+      }
+      j.origin.xyz = draw_triple(dyadic_towards_zero(1));
+      j.origin.rpy = draw_triple(dyadic_towards_zero(3.14));
+      robots::inertial b;
+      b.mass = *power_of_two(-6, 7) * *dyadic(1, 2);
+      b.origin.xyz = draw_triple(dyadic_towards_zero(0.5));
+      b.origin.rpy = draw_triple(dyadic_towards_zero(3.14));
+      // Principal moments s (x, 1, z): x down to 2^-10, z anywhere between |x - 1| and
+      // x + 1 (u = 0 and 1 are the triangle's bounds), all turned by a further rpy.
+      const double s = *power_of_two(-5, 5), x = std::ldexp(1.0, -*int_with_ends(0, 10));
+      const double u = 0.5 + *dyadic_towards_zero(0.5);
+      const double z = std::abs(x - 1) + u * (x + 1 - std::abs(x - 1));
+      const Eigen::Vector3d turn = draw_triple(dyadic_towards_zero(3.14));
+      const Eigen::Matrix3d rot = robots::rpy_rotation<double>(turn);
+      const Eigen::Matrix3d full = rot * Eigen::Vector3d(s * x, s, s * z).asDiagonal() * rot.transpose();
+      b.inertia = (full + full.transpose()) / 2;
+      r.links.push_back({j.child, b});
+      r.joints.push_back(j);
+    }
+    return r;
+  });
+}
+
+void showValue(const robot_case& c, std::ostream& os) {
+  const robots::robot& r = c.robot;
+  os << r.links.size() - 1 << " links:";
+  for (const robots::joint& j : r.joints)
+    os << " " << j.name << " " << robots::joint_type_name(j.type) << " " << j.parent << "->" << j.child << " axis ("
+       << j.axis.transpose() << ")";
+  const auto vec = [&](const char* name, const std::vector<double>& v) {
+    os << ", " << name << " = (";
+    for (std::size_t i = 0; i < v.size(); ++i) os << (i ? ", " : "") << v[i];
+    os << ")";
+  };
+  vec("q", c.q);
+  vec("qdot", c.qdot);
+  vec("qddot", c.qddot);
+  vec("tau", c.tau);
+}
+
+rc::Gen<robot_case> robot_cases(int max_links) {
+  return rc::gen::exec([max_links] {
+    robot_case c;
+    c.robot = *random_robots(max_links);
+    // A robot that moves: the first joint is not fixed where every joint is.
+    if (std::all_of(c.robot.joints.begin(), c.robot.joints.end(),
+                    [](const robots::joint& j) { return j.type == robots::joint_type::fixed; }))
+      c.robot.joints.front().type = robots::joint_type::revolute;
+    const robots::tree t = robots::validate(c.robot);
+    const rc::Gen<double> rate = rc::gen::map(rc::gen::pair(dyadic_towards_zero(2), power_of_two(0, 3)),
+                                              [](const std::pair<double, double>& v) { return v.first * v.second; });
+    for (std::size_t j = 0; j < c.robot.joints.size(); ++j) {
+      if (t.coordinate[j] < 0) continue;
+      const bool slide = c.robot.joints[j].type == robots::joint_type::prismatic;
+      c.q.push_back(*dyadic_towards_zero(slide ? 1 : 3.14));
+      c.qdot.push_back(*rate);
+      c.qddot.push_back(*rate);
+      c.tau.push_back(*rate);
+    }
+    return c;
+  });
+}
+
 }  // namespace mechcheck::generators

@@ -305,6 +305,27 @@ rc::Gen<model_case> model_cases();
 /// translations, rotations and time translation; Galilean boosts only for which = 3.
 rc::Gen<model_case> closed_particle_cases();
 
+/// A random robot (robots/robot.hpp): 1 to max_links moving links under a massless base, as a
+/// chain or a branching tree; revolute, continuous, prismatic and fixed joints with axes
+/// along x, y, z or any direction; joint origins turned by any roll-pitch-yaw; centres of
+/// mass off the axes; inertia tensors with off-diagonal terms (principal moments over three
+/// decades, up to the triangle bound I1 + I2 = I3), turned again by the inertial origin;
+/// masses over four decades. Every number is dyadic (exact in every tier). Shrinks towards
+/// one link, a chain, revolute joints about z, zero offsets and angles, diagonal unit
+/// inertias and unit masses.
+rc::Gen<robots::robot> random_robots(int max_links = 8);
+
+/// A robot with a state: q (angles in [-pi, pi], slides in [-1, 1]), qdot, qddot and tau,
+/// the rates up to 16 in size.
+struct robot_case {
+  robots::robot robot;
+  std::vector<double> q, qdot, qddot, tau;
+};
+
+void showValue(const robot_case& c, std::ostream& os);
+
+rc::Gen<robot_case> robot_cases(int max_links = 8);
+
 /// A direction: three dyadic components in [-2, 2], not all zero.
 rc::Gen<std::vector<double>> directions();
 

@@ -1,0 +1,51 @@
+#include "robots/robots.hpp"
+
+namespace {
+using namespace mechcheck::laws::robots;
+
+struct energy_balance {
+  static law_info info() {
+    return {"robots.energy_balance",
+            "Along the motion driven by joint forces tau, d(T + V)/dt = qdot^T tau "
+            "(the Euler-Lagrange equations with generalized forces)",
+            {"1", "68"}};
+  }
+  // qddot = M^-1 (tau - h) by Cholesky (error cond(M) n eps); dE/dt = dE/dq qdot +
+  // dE/dqdot qddot by AD of E = T + V. k = 64 n cond(M) on |qdot| (|tau| + |h|).
+  template <class T>
+  static void property() {
+    const auto s = draw_robot<T>();
+    const rb::robot_lagrangian<T> lag{&s.model};
+    const dynamic_vector<T> qddot = rb::forward_dynamics(s.model, s.q, s.qdot, s.tau);
+    const Eigen::Index n = s.q.size();
+    dynamic_vector<T> z(2 * n);
+    z << s.q, s.qdot;
+    const auto energy = [&](const auto& x) {
+      using S = typename std::decay_t<decltype(x)>::Scalar;
+      const dynamic_vector<S> q = x.head(n), qdot = x.tail(n);
+      const auto [kinetic, potential] = lag.energies(q, qdot);
+      return S(kinetic + potential);
+    };
+    const dynamic_vector<T> grad = mc::gradient(energy, z);
+    const T rate = T(grad.head(n).dot(s.qdot)) + T(grad.tail(n).dot(qddot));
+    const T power = s.qdot.dot(s.tau);
+    const rb::motion_terms<T> e = rb::motion_terms_at(s.model, s.q, s.qdot);
+    const dynamic_matrix<T> inv = e.mass_matrix.inverse();
+    using std::abs;
+    const T cond = T(e.mass_matrix.cwiseAbs().rowwise().sum().maxCoeff()) * T(inv.cwiseAbs().rowwise().sum().maxCoeff());
+    T vmax = T(0), fmax = T(0);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      vmax = std::max<T>(vmax, T(abs(s.qdot(i))));
+      fmax = std::max<T>(fmax, T(abs(s.tau(i)) + abs(e.bias(i))));
+    }
+    // The forces' terms before they cancel: gravity's (m |g| lever) and the inertia's (m lever^2, term_scales) and the
+    // velocity terms' (|M| |qdot|^2).
+    const rb::term_scale ts = rb::term_scales(s.model, gen::to_tier<double>(s.c.q));
+    const T terms = fmax + T(ts.gravity) + std::max<T>(max_abs(e.mass_matrix), T(ts.inertia)) * vmax * vmax;
+    RC_TAG(cond > T(1e4) ? "cond(M) > 1e4" : "cond(M) <= 1e4");
+    check_close("d(T + V)/dt = qdot^T tau", rate, power, T(vmax * terms * cond), 64.0 * s.links);
+  }
+};
+MECHCHECK_LAW(energy_balance);
+
+}  // namespace

@@ -1,0 +1,56 @@
+#pragma once
+/// Robots: the equations of motion of a kinematic tree from its Lagrangian (notes lectures
+/// 1-3, eqs 1-27; the links' inertia, lectures 13-16). The laws run on random robots
+/// (generators.hpp: random_robots, robot_cases) in every tier.
+///
+/// Tolerance model: T and V are sums over the n links of products along the tree: each
+/// level composes a 3x3 rotation (3-term dot products) and a cross product, so a link's
+/// terms carry about 8 n roundings; M and h come from nested AD of that sum. k = 64 n on
+/// the scale of the terms before they cancel (robots::term_scales: sum m lever^2 + |I| for
+/// M, times |qdot|^2 for the velocity terms, sum m |g| lever for gravity), and the
+/// forward dynamics through a Cholesky solve adds cond(M).
+
+#include <cmath>
+#include "mechcheck/harness/generators.hpp"
+#include "mechcheck/harness/law.hpp"
+
+namespace mechcheck::laws::robots {
+
+namespace mc = mechcheck;
+namespace gen = mechcheck::generators;
+namespace rb = mechcheck::robots;
+using mc::dynamic_matrix;
+using mc::dynamic_vector;
+using mc::harness::check_close;
+using mc::harness::check_zero;
+using mc::harness::law_info;
+
+/// A random robot of at most 4 links with its state, in T (4 keeps the mpfr50 tier's
+/// nested AD within seconds a case).
+template <class T>
+struct robot_sample {
+  gen::robot_case c;
+  rb::robot_model<T> model;
+  dynamic_vector<T> q, qdot, qddot, tau;
+  int links;
+  explicit robot_sample(gen::robot_case rc)
+      : c(std::move(rc)), model(c.robot), q(gen::to_tier<T>(c.q)), qdot(gen::to_tier<T>(c.qdot)),
+        qddot(gen::to_tier<T>(c.qddot)), tau(gen::to_tier<T>(c.tau)), links(model.dofs()) {
+    RC_TAG(std::to_string(c.robot.joints.size()) + " joints");
+  }
+};
+
+template <class T>
+robot_sample<T> draw_robot() {
+  return robot_sample<T>(*gen::robot_cases(4));
+}
+
+template <class T>
+T max_abs(const dynamic_matrix<T>& m) {
+  T out = T(0);
+  using std::abs;
+  for (Eigen::Index i = 0; i < m.size(); ++i) out = std::max<T>(out, T(abs(m(i))));
+  return out;
+}
+
+}  // namespace mechcheck::laws::robots
