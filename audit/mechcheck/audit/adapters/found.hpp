@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mechcheck/audit/drivers.hpp"
+#include "mechcheck/audit/dynamics.hpp"
 #include "mechcheck/audit/engines.hpp"
 #ifdef MECHCHECK_HAVE_GSL
 #include "mechcheck/audit/adapters/gsl.hpp"
@@ -27,6 +28,9 @@
 #endif
 #ifdef MECHCHECK_HAVE_ODE
 #include "mechcheck/audit/adapters/ode_engine.hpp"
+#endif
+#ifdef MECHCHECK_HAVE_KDL
+#include "mechcheck/audit/adapters/kdl.hpp"
 #endif
 #ifdef MECHCHECK_HAVE_DART
 #include "mechcheck/audit/adapters/dart_engine.hpp"
@@ -84,6 +88,15 @@ inline std::vector<engine_shapes> shapes_found() {
 #endif
 #ifdef MECHCHECK_HAVE_DART
   all.push_back(dart_engine::shapes());
+#endif
+  return all;
+}
+
+/// The dynamics libraries built: their equations of motion against the exact Lagrangian.
+inline std::vector<dynamics_library> dynamics_found() {
+  std::vector<dynamics_library> all;
+#ifdef MECHCHECK_HAVE_KDL
+  all.push_back(kdl_dynamics());
 #endif
   return all;
 }

@@ -1,0 +1,167 @@
+// Orocos KDL's dynamics as a dynamics_library (adapters/kdl.hpp).
+#include "mechcheck/audit/adapters/kdl.hpp"
+
+#include <map>
+
+#include <kdl/chain.hpp>
+#include <kdl/chaindynparam.hpp>
+#include <kdl/chainfdsolver_recursive_newton_euler.hpp>
+#include <kdl/chainidsolver_recursive_newton_euler.hpp>
+#include <kdl/frames.hpp>
+#include <kdl/jntarray.hpp>
+#include <kdl/jntspaceinertiamatrix.hpp>
+#include <kdl/tree.hpp>
+#include <kdl/treeidsolver_recursive_newton_euler.hpp>
+
+#include "mechcheck/robots/dynamics.hpp"
+
+namespace mechcheck::audit {
+
+namespace {
+KDL::Vector vec(const Eigen::Vector3d& v) { return KDL::Vector(v(0), v(1), v(2)); }
+
+KDL::Frame frame(const robots::pose& p) {
+  return KDL::Frame(KDL::Rotation::RPY(p.rpy(0), p.rpy(1), p.rpy(2)), vec(p.xyz));
+}
+
+/// The link's inertia as kdl_parser makes it: the tensor turned by its inertial origin's
+/// rotation (RigidBodyInertia's rotation with the centre of mass at zero), about the centre
+/// of mass at the origin's translation.
+KDL::RigidBodyInertia inertia(const std::optional<robots::inertial>& b) {
+  if (!b) return KDL::RigidBodyInertia(0);
+  const KDL::Frame o = frame(b->origin);
+  const Eigen::Matrix3d& i = b->inertia;
+  const KDL::RotationalInertia about(i(0, 0), i(1, 1), i(2, 2), i(0, 1), i(0, 2), i(1, 2));
+  const KDL::RigidBodyInertia turned = o.M * KDL::RigidBodyInertia(0, KDL::Vector::Zero(), about);
+  return KDL::RigidBodyInertia(b->mass, o.p, turned.getRotationalInertia());
+}
+
+void check(int code, const char* solver) {
+  if (code < 0) throw error(std::string("kdl: ") + solver + " returned error code " + std::to_string(code));
+}
+
+class kdl_model final : public dynamics_model {
+ public:
+  explicit kdl_model(const robots::robot& r) : robot_(r), tree_(r.links[std::size_t(robots::validate(r).root)].name) {
+    const robots::tree t = robots::validate(r);
+    n_ = t.dofs;
+    for (const int j : t.order) {
+      const robots::joint& jt = r.joints[std::size_t(j)];
+      const KDL::Frame origin = frame(jt.origin);
+      KDL::Joint joint(jt.name, KDL::Joint::None);
+      if (jt.type == robots::joint_type::revolute || jt.type == robots::joint_type::continuous)
+        joint = KDL::Joint(jt.name, origin.p, origin.M * vec(jt.axis), KDL::Joint::RotAxis);
+      else if (jt.type == robots::joint_type::prismatic)
+        joint = KDL::Joint(jt.name, origin.p, origin.M * vec(jt.axis), KDL::Joint::TransAxis);
+      const robots::link& child = r.links[std::size_t(t.child_link[std::size_t(j)])];
+      if (!tree_.addSegment(KDL::Segment(child.name, joint, origin, inertia(child.body)), jt.parent))
+        throw robot_refused("kdl: Tree::addSegment refused link " + child.name);
+      coordinate_[jt.name] = t.coordinate[std::size_t(j)];
+    }
+    // One leaf: a chain from the root to it.
+    int leaves = 0;
+    std::string leaf = tree_.getRootSegment()->first;
+    for (const auto& [name, element] : tree_.getSegments())
+      if (GetTreeElementChildren(element).empty()) ++leaves, leaf = name;
+    chain_ = leaves == 1;
+    if (chain_) {
+      if (!tree_.getChain(tree_.getRootSegment()->first, leaf, chain_data_))
+        throw robot_refused("kdl: Tree::getChain refused the chain to " + leaf);
+      for (unsigned s = 0; s < chain_data_.getNrOfSegments(); ++s) {
+        const KDL::Joint& j = chain_data_.getSegment(s).getJoint();
+        if (j.getType() != KDL::Joint::None) chain_order_.push_back(coordinate_.at(j.getName()));
+      }
+    }
+    // The tree's joint numbering (TreeElement::q_nr).
+    tree_order_.assign(std::size_t(n_), -1);
+    for (const auto& [name, element] : tree_.getSegments()) {
+      const KDL::Joint& j = GetTreeElementSegment(element).getJoint();
+      if (j.getType() != KDL::Joint::None) tree_order_[GetTreeElementQNr(element)] = coordinate_.at(j.getName());
+    }
+    gravity_ = vec(r.gravity);
+  }
+
+  std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override {
+    if (!chain_) return std::nullopt;
+    KDL::ChainDynParam dyn(chain_data_, gravity_);
+    KDL::JntSpaceInertiaMatrix h(n_);
+    check(dyn.JntToMass(in_chain(q), h), "ChainDynParam::JntToMass");
+    Eigen::MatrixXd out(n_, n_);
+    for (int i = 0; i < n_; ++i)
+      for (int j = 0; j < n_; ++j) out(chain_order_[std::size_t(i)], chain_order_[std::size_t(j)]) = h(i, j);
+    return out;
+  }
+  std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) override {
+    if (!chain_) return std::nullopt;
+    KDL::ChainDynParam dyn(chain_data_, gravity_);
+    KDL::JntArray c(n_), g(n_);
+    check(dyn.JntToCoriolis(in_chain(q), in_chain(qdot), c), "ChainDynParam::JntToCoriolis");
+    check(dyn.JntToGravity(in_chain(q), g), "ChainDynParam::JntToGravity");
+    KDL::JntArray h(n_);
+    for (int i = 0; i < n_; ++i) h(i) = c(i) + g(i);
+    return from_chain(h);
+  }
+  std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                                         const Eigen::VectorXd& qddot) override {
+    KDL::JntArray tau(n_);
+    if (chain_) {
+      KDL::ChainIdSolver_RNE id(chain_data_, gravity_);
+      const KDL::Wrenches none(chain_data_.getNrOfSegments(), KDL::Wrench::Zero());
+      check(id.CartToJnt(in_chain(q), in_chain(qdot), in_chain(qddot), none, tau), "ChainIdSolver_RNE::CartToJnt");
+      return from_chain(tau);
+    }
+    KDL::TreeIdSolver_RNE id(tree_, gravity_);
+    check(id.CartToJnt(in_tree(q), in_tree(qdot), in_tree(qddot), KDL::WrenchMap(), tau), "TreeIdSolver_RNE::CartToJnt");
+    Eigen::VectorXd out(n_);
+    for (int i = 0; i < n_; ++i) out(tree_order_[std::size_t(i)]) = tau(i);
+    return out;
+  }
+  std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                                         const Eigen::VectorXd& tau) override {
+    if (!chain_) return std::nullopt;
+    KDL::ChainFdSolver_RNE fd(chain_data_, gravity_);
+    const KDL::Wrenches none(chain_data_.getNrOfSegments(), KDL::Wrench::Zero());
+    KDL::JntArray a(n_);
+    check(fd.CartToJnt(in_chain(q), in_chain(qdot), in_chain(tau), none, a), "ChainFdSolver_RNE::CartToJnt");
+    return from_chain(a);
+  }
+
+ private:
+  KDL::JntArray in_chain(const Eigen::VectorXd& x) const {
+    KDL::JntArray out(n_);
+    for (int i = 0; i < n_; ++i) out(i) = x(chain_order_[std::size_t(i)]);
+    return out;
+  }
+  KDL::JntArray in_tree(const Eigen::VectorXd& x) const {
+    KDL::JntArray out(n_);
+    for (int i = 0; i < n_; ++i) out(i) = x(tree_order_[std::size_t(i)]);
+    return out;
+  }
+  Eigen::VectorXd from_chain(const KDL::JntArray& x) const {
+    Eigen::VectorXd out(n_);
+    for (int i = 0; i < n_; ++i) out(chain_order_[std::size_t(i)]) = x(i);
+    return out;
+  }
+
+  robots::robot robot_;
+  KDL::Tree tree_;
+  KDL::Chain chain_data_;
+  bool chain_ = false;
+  int n_ = 0;
+  std::map<std::string, int> coordinate_;
+  std::vector<int> chain_order_, tree_order_;
+  KDL::Vector gravity_;
+};
+}  // namespace
+
+dynamics_library kdl_dynamics() {
+  dynamics_library l;
+  l.name = "kdl";
+  l.origin = "Orocos KDL 1.5.1 (liborocos-kdl-dev): ChainDynParam::JntToMass, JntToCoriolis + JntToGravity, "
+             "ChainIdSolver_RNE, ChainFdSolver_RNE on a chain; TreeIdSolver_RNE on a tree; the tree built as "
+             "ROS's kdl_parser builds it from URDF";
+  l.load = [](const robots::robot& r) -> std::unique_ptr<dynamics_model> { return std::make_unique<kdl_model>(r); };
+  return l;
+}
+
+}  // namespace mechcheck::audit

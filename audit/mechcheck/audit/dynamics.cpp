@@ -1,0 +1,136 @@
+// The equations of motion against the exact Lagrangian (dynamics.hpp).
+#include "mechcheck/audit/dynamics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+
+#include "mechcheck/robots/dynamics.hpp"
+
+namespace mechcheck::audit {
+
+const char* dynamics_quantity_name(dynamics_quantity q) {
+  switch (q) {
+    case dynamics_quantity::mass_matrix: return "mass matrix";
+    case dynamics_quantity::bias: return "bias forces";
+    case dynamics_quantity::inverse: return "inverse dynamics";
+    case dynamics_quantity::forward: return "forward dynamics";
+  }
+  return "?";
+}
+
+namespace {
+constexpr double eps = 0x1p-52;
+
+template <class T>
+dynamic_vector<T> widened(const Eigen::VectorXd& v) {
+  dynamic_vector<T> out(v.size());
+  for (Eigen::Index i = 0; i < v.size(); ++i) out(i) = T(v(i));
+  return out;
+}
+/// The largest |entry|, 0 for an empty matrix (a robot without a moving joint).
+double max_abs(const Eigen::MatrixXd& m) { return m.size() ? m.cwiseAbs().maxCoeff() : 0.0; }
+double max_row_sum(const Eigen::MatrixXd& m) { return m.size() ? m.cwiseAbs().rowwise().sum().maxCoeff() : 0.0; }
+
+Eigen::MatrixXd narrowed(const dynamic_matrix<mpfr50>& m) {
+  Eigen::MatrixXd out(m.rows(), m.cols());
+  for (Eigen::Index i = 0; i < m.size(); ++i) out(i) = static_cast<double>(m(i));
+  return out;
+}
+
+/// The exact quantities and their scales at a state.
+struct exact_terms {
+  Eigen::MatrixXd mass;
+  Eigen::VectorXd bias, gravity, tau, qddot;
+  double scale_m = 0, scale_h = 0, scale_tau = 0, scale_forward = 0;
+  int moving_links = 0;
+};
+
+exact_terms exact(const robots::robot& robot, const dynamics_state& x) {
+  const robots::robot_model<mpfr50> m(robot);
+  const int n = m.dofs();
+  for (const auto* v : {&x.q, &x.qdot, &x.qddot, &x.tau})
+    if (v->size() != n)
+      throw dimension_error("check_dynamics: robot " + robot.name + " has " + std::to_string(n) +
+                            " coordinates, a state vector has " + std::to_string(v->size()));
+  const dynamic_vector<mpfr50> q = widened<mpfr50>(x.q), qdot = widened<mpfr50>(x.qdot);
+  const robots::motion_terms<mpfr50> e = robots::motion_terms_at(m, q, qdot);
+  const dynamic_vector<mpfr50> g = robots::gravity_forces(m, q);
+  exact_terms out;
+  out.mass = narrowed(e.mass_matrix);
+  out.bias = narrowed(e.bias);
+  out.gravity = narrowed(g);
+  const dynamic_vector<mpfr50> tau = e.mass_matrix * widened<mpfr50>(x.qddot) + e.bias;
+  out.tau = narrowed(tau);
+  const Eigen::LLT<dynamic_matrix<mpfr50>> llt(e.mass_matrix);
+  if (llt.info() != Eigen::Success)
+    throw singular_error("check_dynamics: robot " + robot.name + ": its mass matrix is not positive definite");
+  const dynamic_vector<mpfr50> rhs = widened<mpfr50>(x.tau) - e.bias;
+  out.qddot = narrowed(llt.solve(rhs));
+  const robots::term_scale terms = robots::term_scales(m, x.q);
+  const double m_max = std::max(max_abs(out.mass), terms.inertia), v = max_abs(x.qdot), a = max_abs(x.qddot);
+  out.scale_m = m_max;
+  out.scale_h = std::max({max_abs(out.gravity), terms.gravity, max_abs(Eigen::VectorXd(out.bias - out.gravity)), m_max * v * v});
+  out.scale_tau = std::max(out.scale_h, m_max * a);
+  const Eigen::MatrixXd inv = n ? Eigen::MatrixXd(out.mass.inverse()) : Eigen::MatrixXd();
+  const double cond = max_row_sum(out.mass) * max_row_sum(inv);
+  out.scale_forward = cond * max_abs(out.qddot) + max_row_sum(inv) * std::max(out.scale_h, max_abs(x.tau));
+  out.moving_links = n;
+  return out;
+}
+
+dynamics_residual residual_of(dynamics_quantity quantity, const Eigen::MatrixXd& library, const Eigen::MatrixXd& reference,
+                              double scale, int links, const std::string& who) {
+  dynamics_residual r;
+  r.quantity = quantity;
+  r.library = library;
+  r.reference = reference;
+  r.scale = scale;
+  r.budget = 16.0 * std::max(links, 1);
+  if (library.rows() != reference.rows() || library.cols() != reference.cols())
+    throw dimension_error(who + ": its " + dynamics_quantity_name(quantity) + " is " + std::to_string(library.rows()) + "x" +
+                          std::to_string(library.cols()) + ", the robot's " + std::to_string(reference.rows()) + "x" +
+                          std::to_string(reference.cols()));
+  if (!library.allFinite()) throw non_finite_error(who + ": its " + dynamics_quantity_name(quantity) + " is not finite");
+  const double d = max_abs(library - reference);
+  r.residual = scale > 0 ? d / (eps * scale) : (d == 0 ? 0 : INFINITY);
+  return r;
+}
+}  // namespace
+
+dynamics_check check_dynamics(const dynamics_library& library, const robots::robot& robot, const dynamics_state& x) {
+  dynamics_check out;
+  std::unique_ptr<dynamics_model> model;
+  try {
+    model = library.load(robot);
+  } catch (const robot_refused& e) {
+    out.refused = e.what();
+    return out;
+  }
+  const exact_terms e = exact(robot, x);
+  const std::string who = library.name + " on robot " + robot.name;
+  if (const auto m = model->mass_matrix(x.q))
+    out.residuals.push_back(residual_of(dynamics_quantity::mass_matrix, *m, e.mass, e.scale_m, e.moving_links, who));
+  if (const auto h = model->bias(x.q, x.qdot))
+    out.residuals.push_back(residual_of(dynamics_quantity::bias, *h, e.bias, e.scale_h, e.moving_links, who));
+  if (const auto t = model->inverse(x.q, x.qdot, x.qddot))
+    out.residuals.push_back(residual_of(dynamics_quantity::inverse, *t, e.tau, e.scale_tau, e.moving_links, who));
+  if (const auto a = model->forward(x.q, x.qdot, x.tau))
+    out.residuals.push_back(residual_of(dynamics_quantity::forward, *a, e.qddot, e.scale_forward, e.moving_links, who));
+  return out;
+}
+
+dynamics_residual reference_only(dynamics_quantity quantity, const robots::robot& robot, const dynamics_state& x) {
+  const exact_terms e = exact(robot, x);
+  switch (quantity) {
+    case dynamics_quantity::mass_matrix: return residual_of(quantity, e.mass, e.mass, e.scale_m, e.moving_links, "reference");
+    case dynamics_quantity::bias: return residual_of(quantity, e.bias, e.bias, e.scale_h, e.moving_links, "reference");
+    case dynamics_quantity::inverse: return residual_of(quantity, e.tau, e.tau, e.scale_tau, e.moving_links, "reference");
+    case dynamics_quantity::forward: return residual_of(quantity, e.qddot, e.qddot, e.scale_forward, e.moving_links, "reference");
+  }
+  throw domain_error("reference_only: unknown quantity");
+}
+
+}  // namespace mechcheck::audit

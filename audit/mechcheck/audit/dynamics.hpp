@@ -1,0 +1,135 @@
+#pragma once
+/// The equations of motion under audit: what a dynamics library computes for a robot --
+/// the mass matrix M(q), the bias forces h(q, qdot), inverse dynamics tau(q, qdot, qddot)
+/// and forward dynamics qddot(q, qdot, tau) -- against the exact Lagrangian of the same
+/// robot (robots/dynamics.hpp) in mpfr50, rounded once to double.
+///
+/// The residual of a quantity is max |library - reference| / (eps * scale), eps = 2^-52,
+/// with the scale of the terms the computation sums, before they cancel (robots::term_scales:
+/// I = sum m r^2 + |I_link| over the links' lever bounds r, G = sum m |g| r):
+///   M        max(|M|, I);
+///   h        max(|g|, G, |h - g|, max(|M|, I) |qdot|^2);
+///   tau      max(scale of h, max(|M|, I) |qddot|);
+///   qddot    cond(M) |qddot| + |M^-1| max(scale of h, |tau|)  (the solve's backward error
+///            amplified by cond(M), and the error of tau - h through M^-1);
+/// all norms the largest component. The budget is 16 n eps scale for a robot of n moving
+/// links: a recursive algorithm passes through n levels, each a handful of 3x3 rotations
+/// and 3-term dot products (about 16 roundings of the scale). A residual above the budget is
+/// a disagreement; its robot is printed as URDF with its state.
+
+#include <cstdint>
+#include <functional>
+#include <ostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "mechcheck/audit/result.hpp"
+#include "mechcheck/core.hpp"
+#include "mechcheck/robots/robot.hpp"
+
+namespace mechcheck::audit {
+
+/// A library that cannot express a robot (a joint type, a tree where it takes chains).
+class robot_refused : public error {
+ public:
+  using error::error;
+};
+
+/// The quantities of the equations of motion.
+enum class dynamics_quantity { mass_matrix, bias, inverse, forward };
+const char* dynamics_quantity_name(dynamics_quantity q);
+
+/// One library's model of one robot: each quantity it offers (nothing where it offers none).
+/// Coordinates in the description's order of its moving joints (robots::tree).
+class dynamics_model {
+ public:
+  virtual ~dynamics_model() = default;
+  virtual std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) = 0;
+  virtual std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) = 0;
+  virtual std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                                                 const Eigen::VectorXd& qddot) = 0;
+  virtual std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                                                 const Eigen::VectorXd& tau) = 0;
+};
+
+/// A dynamics library: how it builds its model of a robot (throws robot_refused).
+struct dynamics_library {
+  std::string name;    ///< e.g. "kdl"
+  std::string origin;  ///< its functions and version, and what the adapter does for it
+  std::function<std::unique_ptr<dynamics_model>(const robots::robot&)> load;
+};
+
+/// A robot's state for every quantity.
+struct dynamics_state {
+  Eigen::VectorXd q, qdot, qddot, tau;
+};
+
+/// One quantity of one library on one robot at one state.
+struct dynamics_residual {
+  dynamics_quantity quantity;
+  Eigen::MatrixXd library, reference;  ///< a vector is one column
+  double scale = 0;      ///< the terms' magnitude (see above)
+  double residual = 0;   ///< max |library - reference| / (eps scale)
+  double budget = 0;     ///< 16 n
+  bool within() const { return residual <= budget; }
+};
+
+/// Every quantity the library offers for the robot at the state; empty when it refuses
+/// the robot (the reason in `refused`).
+struct dynamics_check {
+  std::vector<dynamics_residual> residuals;
+  std::string refused;
+};
+
+/// The library against the exact Lagrangian on one robot and state. A library's failure
+/// (its error code, a non-finite value) is an error naming it.
+dynamics_check check_dynamics(const dynamics_library& library, const robots::robot& robot, const dynamics_state& state);
+
+/// The reference quantities in double (rounded once from mpfr50).
+dynamics_residual reference_only(dynamics_quantity quantity, const robots::robot& robot, const dynamics_state& state);
+
+/// A library over random robots (generators.hpp: robot_cases): the largest residual of each
+/// quantity in eps of its scale, the robots run and refused, and the first disagreement --
+/// RapidCheck's shrunk counterexample: the minimal robot as URDF, its state, both values,
+/// the residual, and the seed that reproduces it.
+struct dynamics_campaign {
+  std::string library, origin;
+  int robots = 0, refused = 0;
+  std::uint64_t seed = 0;
+  int max_links = 8;
+  struct quantity_figure {
+    dynamics_quantity quantity;
+    int checked = 0;
+    double largest = 0;   ///< residual, eps of the scale
+    double budget = 0;    ///< the budget at the largest
+  };
+  std::vector<quantity_figure> figures;
+  std::string disagreement;  ///< "" when every quantity stayed within its budget
+  std::string counterexample_urdf;
+  std::string note;          ///< a library's failure (an error, a non-finite value), if any
+  bool agrees() const { return disagreement.empty() && note.empty(); }
+};
+
+struct dynamics_options {
+  int robots = 100;
+  std::uint64_t seed = 1;
+  int max_links = 8;
+  std::function<void(const std::string&)> progress;
+};
+
+dynamics_campaign run_dynamics_campaign(const dynamics_library& library, const dynamics_options& options);
+
+/// A user's robot (a URDF file's) at `states` random states.
+dynamics_campaign run_dynamics_on(const dynamics_library& library, const robots::robot& robot,
+                                  const dynamics_options& options);
+
+/// The campaigns as a console table, JSON and Markdown (written into `directory`, with each
+/// counterexample as a URDF file); the files written.
+void print_dynamics(std::ostream& out, const std::vector<dynamics_campaign>& campaigns);
+std::vector<std::string> write_dynamics_report(const std::string& directory, const std::vector<dynamics_campaign>& campaigns);
+
+}  // namespace mechcheck::audit

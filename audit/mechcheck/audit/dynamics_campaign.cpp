@@ -1,0 +1,198 @@
+// The dynamics audit over random robots, shrunk by RapidCheck, and its report (dynamics.hpp).
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <rapidcheck.h>
+
+#include "mechcheck/audit/dynamics.hpp"
+#include "mechcheck/audit/problems/urdf.hpp"
+#include "mechcheck/harness/generators.hpp"
+
+namespace mechcheck::audit {
+
+namespace {
+dynamics_state state_of(const generators::robot_case& c) {
+  dynamics_state x;
+  x.q = generators::to_tier<double>(c.q);
+  x.qdot = generators::to_tier<double>(c.qdot);
+  x.qddot = generators::to_tier<double>(c.qddot);
+  x.tau = generators::to_tier<double>(c.tau);
+  return x;
+}
+
+std::string vector_text(const Eigen::MatrixXd& m) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "[";
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    if (m.cols() > 1) s << (i ? "; " : "");
+    for (Eigen::Index j = 0; j < m.cols(); ++j) s << (i + j && m.cols() == 1 ? ", " : j ? ", " : "") << m(i, j);
+  }
+  return s.str() + "]";
+}
+
+/// The campaign's property over cases drawn by `draw`: figures recorded until the first
+/// disagreement (then RapidCheck shrinks it, and the last failing case is the minimal one).
+dynamics_campaign campaign(const dynamics_library& library, const dynamics_options& opt,
+                           const std::function<generators::robot_case()>& draw) {
+  dynamics_campaign c;
+  c.library = library.name;
+  c.origin = library.origin;
+  c.seed = opt.seed;
+  c.max_links = opt.max_links;
+  for (const auto q : {dynamics_quantity::mass_matrix, dynamics_quantity::bias, dynamics_quantity::inverse,
+                       dynamics_quantity::forward})
+    c.figures.push_back({q, 0, 0, 0});
+  bool failed = false;
+  const auto property = [&] {
+    const generators::robot_case rc = draw();
+    dynamics_check check;
+    try {
+      check = check_dynamics(library, rc.robot, state_of(rc));
+    } catch (const std::exception& e) {
+      failed = true;
+      c.note = e.what();
+      c.counterexample_urdf = to_urdf(rc.robot);
+      RC_FAIL(std::string("the library failed: ") + e.what());
+    }
+    if (!failed) {
+      ++c.robots;
+      if (!check.refused.empty()) ++c.refused;
+      for (const auto& r : check.residuals)
+        for (auto& f : c.figures)
+          if (f.quantity == r.quantity) {
+            ++f.checked;
+            if (r.residual >= f.largest) f.largest = r.residual, f.budget = r.budget;
+          }
+      if (opt.progress && c.robots % 25 == 0)
+        opt.progress(library.name + ": " + std::to_string(c.robots) + " of " + std::to_string(opt.robots) + " robots");
+    }
+    for (const auto& r : check.residuals)
+      if (!r.within()) {
+        failed = true;
+        std::ostringstream s;
+        s.precision(3);
+        s << dynamics_quantity_name(r.quantity) << ": residual " << r.residual << " eps of its scale " << r.scale
+          << " (budget " << r.budget << ")\n  q = " << vector_text(state_of(rc).q) << "\n  qdot = " << vector_text(state_of(rc).qdot)
+          << "\n  qddot = " << vector_text(state_of(rc).qddot) << "\n  tau = " << vector_text(state_of(rc).tau)
+          << "\n  " << library.name << ": " << vector_text(r.library) << "\n  reference: " << vector_text(r.reference);
+        c.disagreement = s.str();
+        c.counterexample_urdf = to_urdf(rc.robot);
+        RC_FAIL(c.disagreement);
+      }
+  };
+  rc::detail::TestParams params;
+  params.seed = opt.seed;
+  params.maxSuccess = opt.robots;
+  params.maxSize = 100;
+  rc::detail::checkTestable(property, rc::detail::TestMetadata{}, params);
+  return c;
+}
+}  // namespace
+
+dynamics_campaign run_dynamics_campaign(const dynamics_library& library, const dynamics_options& opt) {
+  if (opt.robots < 1) throw domain_error("run_dynamics_campaign: robots must be >= 1, got " + std::to_string(opt.robots));
+  if (opt.max_links < 1 || opt.max_links > 32)
+    throw domain_error("run_dynamics_campaign: max_links must be in 1..32, got " + std::to_string(opt.max_links));
+  const int links = opt.max_links;
+  return campaign(library, opt, [links] { return *generators::robot_cases(links); });
+}
+
+dynamics_campaign run_dynamics_on(const dynamics_library& library, const robots::robot& robot, const dynamics_options& opt) {
+  if (opt.robots < 1) throw domain_error("run_dynamics_on: states must be >= 1, got " + std::to_string(opt.robots));
+  const robots::tree t = robots::validate(robot);
+  dynamics_campaign c = campaign(library, opt, [&] {
+    generators::robot_case rc;
+    rc.robot = robot;
+    for (std::size_t j = 0; j < robot.joints.size(); ++j) {
+      if (t.coordinate[j] < 0) continue;
+      rc.q.push_back(*generators::dyadic_towards_zero(3.14));
+      rc.qdot.push_back(*generators::dyadic_towards_zero(4));
+      rc.qddot.push_back(*generators::dyadic_towards_zero(4));
+      rc.tau.push_back(*generators::dyadic_towards_zero(4));
+    }
+    return rc;
+  });
+  c.max_links = t.dofs;
+  return c;
+}
+
+namespace {
+std::string sci(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2g", x);
+  return buf;
+}
+std::string verdict_of(const dynamics_campaign& c, const dynamics_campaign::quantity_figure& f) {
+  if (f.checked == 0) return "not offered";
+  if (!c.note.empty()) return "failed";
+  if (!c.disagreement.empty() && c.disagreement.rfind(dynamics_quantity_name(f.quantity), 0) == 0) return "DISAGREES";
+  return f.largest <= f.budget ? "within" : "DISAGREES";
+}
+}  // namespace
+
+void print_dynamics(std::ostream& out, const std::vector<dynamics_campaign>& campaigns) {
+  char line[256];
+  std::snprintf(line, sizeof line, "%-10s %-18s %7s %12s %8s  %s\n", "library", "quantity", "robots", "largest", "budget",
+                "verdict");
+  out << "\nequations of motion against the exact Lagrangian (residual in eps of the terms' scale)\n" << line;
+  for (const auto& c : campaigns) {
+    for (const auto& f : c.figures) {
+      std::snprintf(line, sizeof line, "%-10s %-18s %7d %12s %8s  %s\n", c.library.c_str(), dynamics_quantity_name(f.quantity),
+                    f.checked, f.checked ? sci(f.largest).c_str() : "-", f.checked ? sci(f.budget).c_str() : "-",
+                    verdict_of(c, f).c_str());
+      out << line;
+    }
+    if (c.refused) out << "  " << c.library << " refused " << c.refused << " of " << c.robots << " robots (a quantity it does not offer on them)\n";
+    if (!c.note.empty()) out << "  " << c.library << " failed: " << c.note << "\n";
+    if (!c.disagreement.empty()) out << "  " << c.library << ", shrunk: " << c.disagreement << "\n";
+  }
+}
+
+std::vector<std::string> write_dynamics_report(const std::string& directory, const std::vector<dynamics_campaign>& campaigns) {
+  namespace fs = std::filesystem;
+  fs::create_directories(directory);
+  std::vector<std::string> written;
+  nlohmann::ordered_json j = nlohmann::ordered_json::array();
+  std::ostringstream md;
+  md << "# Equations of motion against the exact Lagrangian\n\n"
+     << "Residual: max |library - reference| / (eps scale), eps = 2^-52, the reference in mpfr50 rounded once "
+        "(docs/audit.md, \"Equations of motion\").\n\n"
+     << "| library | quantity | robots | largest residual | budget | verdict |\n|---|---|---:|---:|---:|---|\n";
+  for (const auto& c : campaigns) {
+    nlohmann::ordered_json e = {{"library", c.library}, {"origin", c.origin}, {"seed", c.seed}, {"robots", c.robots},
+                                {"refused", c.refused}, {"max_links", c.max_links}};
+    nlohmann::ordered_json fig = nlohmann::ordered_json::array();
+    for (const auto& f : c.figures) {
+      fig.push_back({{"quantity", dynamics_quantity_name(f.quantity)}, {"checked", f.checked}, {"largest", f.largest},
+                     {"budget", f.budget}, {"verdict", verdict_of(c, f)}});
+      md << "| " << c.library << " | " << dynamics_quantity_name(f.quantity) << " | " << f.checked << " | "
+         << (f.checked ? sci(f.largest) : "-") << " | " << (f.checked ? sci(f.budget) : "-") << " | " << verdict_of(c, f) << " |\n";
+    }
+    e["quantities"] = fig;
+    if (!c.note.empty()) e["failure"] = c.note;
+    if (!c.disagreement.empty()) e["disagreement"] = c.disagreement;
+    if (!c.counterexample_urdf.empty()) {
+      const std::string file = (fs::path(directory) / (c.library + "-counterexample.urdf")).string();
+      std::ofstream(file) << c.counterexample_urdf;
+      written.push_back(file);
+      e["counterexample"] = fs::path(file).filename().string();
+      md << "\n" << c.library << ", shrunk counterexample (" << fs::path(file).filename().string() << "):\n\n```\n"
+         << (c.note.empty() ? c.disagreement : c.note) << "\n```\n\n";
+    }
+    j.push_back(e);
+  }
+  const std::string json_file = (fs::path(directory) / "dynamics.json").string();
+  std::ofstream(json_file) << j.dump(2) << "\n";
+  const std::string md_file = (fs::path(directory) / "dynamics.md").string();
+  std::ofstream(md_file) << md.str();
+  written.push_back(json_file);
+  written.push_back(md_file);
+  return written;
+}
+
+}  // namespace mechcheck::audit

@@ -1,0 +1,208 @@
+// URDF read and written by tinyxml2 (problems/urdf.hpp).
+#include "mechcheck/audit/problems/urdf.hpp"
+
+#include <charconv>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string_view>
+
+#include <tinyxml2.h>
+
+namespace mechcheck::audit {
+
+namespace {
+using robots::robot_error;
+
+/// A number written as text, whole (surrounding blanks allowed).
+double number(std::string_view s, const std::string& what) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\n')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\n')) s.remove_suffix(1);
+  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  double x = 0;
+  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), x);
+  if (s.empty() || error != std::errc() || end != s.data() + s.size())
+    throw robot_error(what + ": \"" + std::string(s) + "\" is not a number");
+  if (!std::isfinite(x)) throw robot_error(what + ": \"" + std::string(s) + "\" is not finite");
+  return x;
+}
+
+/// Three numbers separated by blanks ("0 0.5 -1").
+Eigen::Vector3d triple(const char* text, const std::string& what) {
+  std::string_view s(text);
+  Eigen::Vector3d v;
+  int k = 0;
+  std::size_t i = 0;
+  while (i < s.size()) {
+    while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\n')) ++i;
+    if (i == s.size()) break;
+    std::size_t j = i;
+    while (j < s.size() && s[j] != ' ' && s[j] != '\t' && s[j] != '\n') ++j;
+    if (k == 3) throw robot_error(what + ": \"" + std::string(s) + "\" has more than three numbers");
+    v(k++) = number(s.substr(i, j - i), what);
+    i = j;
+  }
+  if (k != 3) throw robot_error(what + ": \"" + std::string(s) + "\" has " + std::to_string(k) + " numbers, 3 expected");
+  return v;
+}
+
+robots::pose pose_of(const tinyxml2::XMLElement* parent, const std::string& what) {
+  robots::pose p;
+  const tinyxml2::XMLElement* o = parent->FirstChildElement("origin");
+  if (!o) return p;
+  if (const char* xyz = o->Attribute("xyz")) p.xyz = triple(xyz, what + " origin xyz");
+  if (const char* rpy = o->Attribute("rpy")) p.rpy = triple(rpy, what + " origin rpy");
+  return p;
+}
+
+double attribute(const tinyxml2::XMLElement* e, const char* name, const std::string& what) {
+  const char* v = e->Attribute(name);
+  if (!v) throw robot_error(what + " has no attribute " + name);
+  return number(v, what + " " + name);
+}
+
+std::string text(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+std::string text(const Eigen::Vector3d& v) { return text(v(0)) + " " + text(v(1)) + " " + text(v(2)); }
+}  // namespace
+
+robots::robot parse_urdf(const std::string& document, const std::string& origin) {
+  tinyxml2::XMLDocument doc;
+  if (doc.Parse(document.c_str(), document.size()) != tinyxml2::XML_SUCCESS)
+    throw robot_error(origin + ": not XML: " + std::string(doc.ErrorStr()));
+  const tinyxml2::XMLElement* top = doc.FirstChildElement("robot");
+  if (!top) throw robot_error(origin + ": not URDF: no <robot> element");
+  robots::robot r;
+  if (const char* name = top->Attribute("name")) r.name = name;
+  const std::string who = origin + ": robot " + r.name;
+  for (const tinyxml2::XMLNode* n = doc.FirstChild(); n; n = n->NextSibling())
+    if (const tinyxml2::XMLComment* c = n->ToComment()) {
+      const std::string_view s(c->Value());
+      const std::string_view key = " mechcheck gravity=\"";
+      if (s.substr(0, key.size()) == key) {
+        const std::size_t end = s.find('"', key.size());
+        if (end == std::string_view::npos) throw robot_error(who + ": a gravity comment without its closing quote");
+        r.gravity = triple(std::string(s.substr(key.size(), end - key.size())).c_str(), who + ": gravity");
+      }
+    }
+  for (const tinyxml2::XMLElement* e = top->FirstChildElement("link"); e; e = e->NextSiblingElement("link")) {
+    robots::link l;
+    const char* name = e->Attribute("name");
+    if (!name || !*name) throw robot_error(who + ": a <link> without a name");
+    l.name = name;
+    const std::string what = who + ": link " + l.name;
+    if (const tinyxml2::XMLElement* in = e->FirstChildElement("inertial")) {
+      robots::inertial b;
+      b.origin = pose_of(in, what + " inertial");
+      const tinyxml2::XMLElement* mass = in->FirstChildElement("mass");
+      if (!mass) throw robot_error(what + ": <inertial> without <mass>");
+      b.mass = attribute(mass, "value", what + " mass");
+      const tinyxml2::XMLElement* i = in->FirstChildElement("inertia");
+      if (!i) throw robot_error(what + ": <inertial> without <inertia>");
+      const double ixx = attribute(i, "ixx", what + " inertia"), ixy = attribute(i, "ixy", what + " inertia"),
+                   ixz = attribute(i, "ixz", what + " inertia"), iyy = attribute(i, "iyy", what + " inertia"),
+                   iyz = attribute(i, "iyz", what + " inertia"), izz = attribute(i, "izz", what + " inertia");
+      b.inertia << ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz;
+      l.body = b;
+    }
+    r.links.push_back(std::move(l));
+  }
+  for (const tinyxml2::XMLElement* e = top->FirstChildElement("joint"); e; e = e->NextSiblingElement("joint")) {
+    robots::joint j;
+    const char* name = e->Attribute("name");
+    if (!name || !*name) throw robot_error(who + ": a <joint> without a name");
+    j.name = name;
+    const std::string what = who + ": joint " + j.name;
+    const char* type = e->Attribute("type");
+    if (!type) throw robot_error(what + " has no type");
+    const std::string t(type);
+    if (t == "revolute") j.type = robots::joint_type::revolute;
+    else if (t == "continuous") j.type = robots::joint_type::continuous;
+    else if (t == "prismatic") j.type = robots::joint_type::prismatic;
+    else if (t == "fixed") j.type = robots::joint_type::fixed;
+    else if (t == "floating" || t == "planar")
+      throw robot_error(what + ": type " + t + " is not modelled (revolute, continuous, prismatic, fixed)");
+    else
+      throw robot_error(what + ": unknown type \"" + t + "\"");
+    for (const auto& [tag, target] : {std::pair{"parent", &j.parent}, std::pair{"child", &j.child}}) {
+      const tinyxml2::XMLElement* x = e->FirstChildElement(tag);
+      const char* link = x ? x->Attribute("link") : nullptr;
+      if (!link) throw robot_error(what + ": no <" + tag + " link=...>");
+      *target = link;
+    }
+    j.origin = pose_of(e, what);
+    if (const tinyxml2::XMLElement* a = e->FirstChildElement("axis"))
+      if (const char* xyz = a->Attribute("xyz")) j.axis = triple(xyz, what + " axis");
+    r.joints.push_back(std::move(j));
+  }
+  // Refuse here what the dynamics would: the messages name the file.
+  try {
+    robots::validate(r);
+  } catch (const robot_error& e) {
+    throw robot_error(origin + ": " + e.what());
+  }
+  return r;
+}
+
+robots::robot read_urdf(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw robot_error("read_urdf: cannot open " + path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return parse_urdf(s.str(), path);
+}
+
+std::string to_urdf(const robots::robot& r) {
+  tinyxml2::XMLDocument doc;
+  doc.InsertEndChild(doc.NewDeclaration());
+  doc.InsertEndChild(doc.NewComment((" mechcheck gravity=\"" + text(r.gravity) + "\" ").c_str()));
+  tinyxml2::XMLElement* top = doc.NewElement("robot");
+  top->SetAttribute("name", r.name.c_str());
+  doc.InsertEndChild(top);
+  const auto origin = [&](tinyxml2::XMLElement* parent, const robots::pose& p) {
+    tinyxml2::XMLElement* o = parent->InsertNewChildElement("origin");
+    o->SetAttribute("xyz", text(p.xyz).c_str());
+    o->SetAttribute("rpy", text(p.rpy).c_str());
+  };
+  for (const robots::link& l : r.links) {
+    tinyxml2::XMLElement* e = top->InsertNewChildElement("link");
+    e->SetAttribute("name", l.name.c_str());
+    if (!l.body) continue;
+    tinyxml2::XMLElement* in = e->InsertNewChildElement("inertial");
+    origin(in, l.body->origin);
+    in->InsertNewChildElement("mass")->SetAttribute("value", text(l.body->mass).c_str());
+    tinyxml2::XMLElement* i = in->InsertNewChildElement("inertia");
+    const Eigen::Matrix3d& m = l.body->inertia;
+    i->SetAttribute("ixx", text(m(0, 0)).c_str());
+    i->SetAttribute("ixy", text(m(0, 1)).c_str());
+    i->SetAttribute("ixz", text(m(0, 2)).c_str());
+    i->SetAttribute("iyy", text(m(1, 1)).c_str());
+    i->SetAttribute("iyz", text(m(1, 2)).c_str());
+    i->SetAttribute("izz", text(m(2, 2)).c_str());
+  }
+  for (const robots::joint& j : r.joints) {
+    tinyxml2::XMLElement* e = top->InsertNewChildElement("joint");
+    e->SetAttribute("name", j.name.c_str());
+    e->SetAttribute("type", robots::joint_type_name(j.type));
+    e->InsertNewChildElement("parent")->SetAttribute("link", j.parent.c_str());
+    e->InsertNewChildElement("child")->SetAttribute("link", j.child.c_str());
+    origin(e, j.origin);
+    if (j.type != robots::joint_type::fixed) e->InsertNewChildElement("axis")->SetAttribute("xyz", text(j.axis).c_str());
+    if (j.type == robots::joint_type::revolute || j.type == robots::joint_type::prismatic) {
+      // URDF requires limits on these types; the dynamics do not use them.
+      tinyxml2::XMLElement* limit = e->InsertNewChildElement("limit");
+      limit->SetAttribute("lower", "-1e9");
+      limit->SetAttribute("upper", "1e9");
+      limit->SetAttribute("effort", "1e9");
+      limit->SetAttribute("velocity", "1e9");
+    }
+  }
+  tinyxml2::XMLPrinter printer;
+  doc.Print(&printer);
+  return printer.CStr();
+}
+
+}  // namespace mechcheck::audit
