@@ -70,9 +70,16 @@ expect 0 "audited 3 engine integrators" --exec-engine --scenario pendulum_small 
   --require-measured '*' -q -o "$work/measures" -- "$child" engine
 grep -q '"scenario": "pendulum_small"' "$work/measures/engines.json" ||
   { echo "FAILED: the measured run's report lacks its scenario"; failed=1; }
+# The equations of motion: random robots, a user's URDF, a file that is not one.
+expect 1 "--dynamics matches no dynamics library" --dynamics 'kld' -o "$work/d"
+expect 0 "mass matrix .* within" --dynamics '*' --robots 20 -q --require '*' -o "$work/d"
+expect 0 "on arm .*forward dynamics .* within" --dynamics '*' --urdf "$source_dir/examples/robots/arm.urdf" --robots 20 -q \
+  -o "$work/d"
+printf '<robot name="r"><link name="a"/><joint name="j" type="floating"/></robot>' > "$work/bad.urdf"
+expect 1 "bad.urdf: robot r: joint j: type floating is not modelled" --dynamics '*' --urdf "$work/bad.urdf" -o "$work/d"
 # --list names every kind; --help names the tableaus.
 for section in "steppers \([0-9]+;" "adaptive drivers \([0-9]+;" "engine integrators \([0-9]+;" \
-               "engine scenarios \(14;" "problems \([0-9]+;"; do
+               "engine scenarios \(14;" "problems \([0-9]+;" "dynamics libraries \([0-9]+;"; do
   expect 0 "^$section" --list
 done
 expect 0 "The classical tableaus \(--tableau\): .*tableaus" --help

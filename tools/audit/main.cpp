@@ -25,6 +25,7 @@
 #include "mechcheck/audit/adapters/exec.hpp"
 #include "mechcheck/audit/adapters/found.hpp"
 #include "mechcheck/audit/problems/classic.hpp"
+#include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/audit/report.hpp"
 #include "mechcheck/audit/tableau_file.hpp"
 #include "patterns.hpp"
@@ -202,6 +203,18 @@ int main(int argc, char** argv) {
                  "physics-engine integrators to audit on the scenarios with exact references, "
                  "as shell patterns (e.g. 'mujoco::*'); with no --stepper, --tableau or --driver "
                  "only the engines are audited");
+  std::vector<std::string> dynamics_patterns, urdf_files;
+  int dynamics_robots = 100;
+  std::uint64_t dynamics_seed = 1;
+  app.add_option("--dynamics", dynamics_patterns,
+                 "dynamics libraries whose equations of motion (mass matrix, bias forces, inverse and forward "
+                 "dynamics) are held to the exact Lagrangian on random robots, as shell patterns (e.g. 'kdl', '*'); "
+                 "alone, only they are audited");
+  app.add_option("--urdf", urdf_files, "with --dynamics: a robot of your own (URDF), at --robots random states")
+      ->check(CLI::ExistingFile);
+  app.add_option("--robots", dynamics_robots, "with --dynamics: random robots (or states of --urdf robots; default 100)")
+      ->check(CLI::Range(1, 1000000));
+  app.add_option("--seed", dynamics_seed, "with --dynamics: the seed of the random robots (default 1)");
   std::vector<std::string> engine_scenarios, scenario_names;
   for (const auto& s : audit::scenarios()) scenario_names.push_back(s.name);
   app.add_option("--scenario", engine_scenarios, "engine scenarios (default all)")
@@ -224,7 +237,8 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     for (const auto& [option, patterns] : {std::pair{"--stepper", &steppers}, std::pair{"--driver", &driver_patterns},
-                                           std::pair{"--engine", &engine_patterns}, std::pair{"--require", &require},
+                                           std::pair{"--engine", &engine_patterns}, std::pair{"--dynamics", &dynamics_patterns},
+                                           std::pair{"--require", &require},
                                            std::pair{"--require-measured", &require_measured}})
       for (const auto& p : *patterns) audit_tool::check_pattern(option, p);
   } catch (const error& e) {
@@ -372,6 +386,9 @@ int main(int argc, char** argv) {
     std::cout << "problems (" << p.size() - 1 << "; -p, --long-run-problem):\n";
     for (const auto& n : p)
       std::cout << "  " << n << (n == "henon_heiles" ? " (both orbits: henon_heiles_regular and _chaotic)" : "") << "\n";
+    const auto dl = audit::dynamics_found();
+    std::cout << "dynamics libraries (" << dl.size() << "; --dynamics, --urdf):\n";
+    for (const auto& l : dl) std::cout << "  " << l.name << ": " << l.origin << "\n";
     return status;
   }
 
@@ -397,6 +414,45 @@ int main(int argc, char** argv) {
       std::all_of(driver_patterns.begin(), driver_patterns.end(), [](const std::string& p) { return p == "exec::*"; }) &&
       std::all_of(engine_patterns.begin(), engine_patterns.end(), [](const std::string& p) { return p == "exec::*"; }))
     return status;  // the child was all there was to audit
+
+  // The equations of motion.
+  if (!dynamics_patterns.empty()) {
+    std::vector<audit::dynamics_library> libraries = audit::dynamics_found();
+    std::erase_if(libraries, [&](const audit::dynamics_library& l) { return !audit_tool::matches(dynamics_patterns, l.name); });
+    if (libraries.empty()) {
+      std::cerr << "mechcheck-audit: --dynamics matches no dynamics library of this build\n";
+      return 1;
+    }
+    std::vector<robots::robot> own;
+    try {
+      for (const auto& f : urdf_files) own.push_back(audit::read_urdf(f));
+    } catch (const error& e) {
+      std::cerr << "mechcheck-audit: " << e.what() << "\n";
+      return 1;
+    }
+    audit::dynamics_options dopt;
+    dopt.robots = dynamics_robots;
+    dopt.seed = dynamics_seed;
+    if (!quiet) dopt.progress = progress;
+    std::vector<audit::dynamics_campaign> campaigns;
+    for (const auto& l : libraries) {
+      if (own.empty()) campaigns.push_back(audit::run_dynamics_campaign(l, dopt));
+      for (const auto& r : own) {
+        campaigns.push_back(audit::run_dynamics_on(l, r, dopt));
+        campaigns.back().library = l.name + " on " + r.name;
+      }
+    }
+    audit::print_dynamics(std::cout, campaigns);
+    if (!report_files([&] { return audit::write_dynamics_report(output, campaigns); })) return 1;
+    for (const auto& c : campaigns)
+      if (!c.agrees() && audit_tool::matches_any(require, c.library)) {
+        std::cerr << "mechcheck-audit: " << c.library << ": a quantity disagrees with the Lagrangian (see the table)\n";
+        raise(2);
+      }
+    if (steppers.empty() && tableau_files.empty() && driver_patterns.empty() && engine_patterns.empty() &&
+        exec_targets.empty())
+      return status;
+  }
 
   // The engines.
   if (!engine_patterns.empty()) {

@@ -1,0 +1,361 @@
+// Robots: the Lagrangian reference against closed forms (a two-link arm, a slider), the
+// description's validation and its URDF round trip, and the dynamics audit: KDL (where
+// found) against the reference on random robots, and a wrong library caught.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include <rapidcheck.h>
+
+#include "mechcheck/audit/adapters/found.hpp"
+#include "mechcheck/audit/dynamics.hpp"
+#include "mechcheck/audit/problems/urdf.hpp"
+#include "mechcheck/harness/generators.hpp"
+#include "mechcheck/robots.hpp"
+#ifdef MECHCHECK_HAVE_KDL
+#include "mechcheck/audit/adapters/kdl.hpp"
+#endif
+
+namespace robots_test {
+using namespace mechcheck;
+namespace rb = mechcheck::robots;
+namespace audit = mechcheck::audit;
+
+/// A property over `cases` random cases from MECHCHECK_SEED's seed (20261126 without it):
+/// "" when it holds, else the shrunk counterexample's message (RapidCheck's report).
+template <class F>
+std::string seeded_check(int cases, F&& property) {
+  rc::detail::TestParams params;
+  params.maxSuccess = cases;
+  const char* seed = std::getenv("MECHCHECK_SEED");
+  params.seed = seed && *seed ? std::strtoull(seed, nullptr, 10) : 20261126;
+  const rc::detail::TestResult outcome = rc::detail::checkTestable(std::forward<F>(property), rc::detail::TestMetadata{}, params);
+  rc::detail::FailureResult failure;
+  if (outcome.match(failure)) {
+    std::ostringstream s;
+    s << failure;
+    return s.str();
+  }
+  rc::detail::GaveUpResult gave_up;
+  if (outcome.match(gave_up)) return "gave up: " + gave_up.description;
+  return "";
+}
+
+/// A planar two-link arm hinged about y, hanging along -z: link lengths l1 (the elbow at
+/// (0, 0, -l1) in the upper arm's frame), centres of mass c1, c2 below their hinges,
+/// moments about y I1, I2 (the others arbitrary).
+rb::robot two_link_arm(double m1, double m2, double l1, double c1, double c2, double i1, double i2) {
+  rb::robot r;
+  r.name = "two_link_arm";
+  r.links.push_back({"base", std::nullopt});
+  rb::inertial a;
+  a.mass = m1;
+  a.origin.xyz = {0, 0, -c1};
+  a.inertia = Eigen::Vector3d(0.5, i1, 0.25).asDiagonal();
+  r.links.push_back({"upper", a});
+  rb::inertial b = a;
+  b.mass = m2;
+  b.origin.xyz = {0, 0, -c2};
+  b.inertia = Eigen::Vector3d(0.125, i2, 0.0625).asDiagonal();
+  r.links.push_back({"fore", b});
+  rb::joint shoulder;
+  shoulder.name = "shoulder";
+  shoulder.parent = "base";
+  shoulder.child = "upper";
+  shoulder.axis = {0, 1, 0};
+  r.joints.push_back(shoulder);
+  rb::joint elbow = shoulder;
+  elbow.name = "elbow";
+  elbow.parent = "upper";
+  elbow.child = "fore";
+  elbow.origin.xyz = {0, 0, -l1};
+  r.joints.push_back(elbow);
+  return r;
+}
+
+struct arm_closed_form {
+  Eigen::Matrix2d m;
+  Eigen::Vector2d h;
+};
+
+/// The arm's M and h (Spong, Hutchinson and Vidyasagar, Robot Modeling and Control, 7.4.2,
+/// with angles about +y from the downward vertical): rotation about +y takes -z towards -x,
+/// so a link's centre of mass is at height -c cos(angle) and V = -sum m g c cos(angle).
+arm_closed_form arm_terms(double m1, double m2, double l1, double c1, double c2, double i1, double i2, double g,
+                          const Eigen::Vector2d& q, const Eigen::Vector2d& qdot) {
+  const double c = std::cos(q(1)), s = std::sin(q(1));
+  arm_closed_form out;
+  out.m(0, 0) = m1 * c1 * c1 + i1 + m2 * (l1 * l1 + c2 * c2 + 2 * l1 * c2 * c) + i2;
+  out.m(0, 1) = out.m(1, 0) = m2 * (c2 * c2 + l1 * c2 * c) + i2;
+  out.m(1, 1) = m2 * c2 * c2 + i2;
+  const double k = m2 * l1 * c2 * s;
+  out.h(0) = -k * (2 * qdot(0) * qdot(1) + qdot(1) * qdot(1)) + m1 * g * c1 * std::sin(q(0)) +
+             m2 * g * (l1 * std::sin(q(0)) + c2 * std::sin(q(0) + q(1)));
+  out.h(1) = k * qdot(0) * qdot(0) + m2 * g * c2 * std::sin(q(0) + q(1));
+  return out;
+}
+
+TEST(robots, the_lagrangian_gives_the_two_link_arms_closed_form_in_double_and_mpfr50) {
+  const double m1 = 2, m2 = 1.5, l1 = 1, c1 = 0.5, c2 = 0.375, i1 = 0.25, i2 = 0.0625, g = 9.81;
+  const rb::robot r = two_link_arm(m1, m2, l1, c1, c2, i1, i2);
+  const Eigen::Vector2d q(0.3, -0.7), qdot(1.1, 0.4);
+  const arm_closed_form want = arm_terms(m1, m2, l1, c1, c2, i1, i2, g, q, qdot);
+  const rb::robot_model<double> md(r);
+  const rb::motion_terms<double> d = rb::motion_terms_at(md, Eigen::VectorXd(q), Eigen::VectorXd(qdot));
+  constexpr double eps = 0x1p-52;
+  // The closed form is itself evaluated in double: 32 eps of the terms' scale between them.
+  EXPECT_LE((d.mass_matrix - want.m).cwiseAbs().maxCoeff(), 32 * eps * want.m.cwiseAbs().maxCoeff());
+  EXPECT_LE((d.bias - want.h).cwiseAbs().maxCoeff(), 32 * eps * (m1 + m2) * g * 2);
+  // mpfr50 rounded once agrees with double to the double's own rounding.
+  const rb::robot_model<mpfr50> mm(r);
+  const rb::motion_terms<mpfr50> e = rb::motion_terms_at(mm, dynamic_vector<mpfr50>(q.cast<mpfr50>()),
+                                                         dynamic_vector<mpfr50>(qdot.cast<mpfr50>()));
+  for (int i = 0; i < 4; ++i)
+    EXPECT_NEAR(static_cast<double>(e.mass_matrix(i)), want.m(i), 32 * eps * want.m.cwiseAbs().maxCoeff()) << i;
+  // Forward after inverse returns the acceleration.
+  const Eigen::VectorXd qddot = Eigen::Vector2d(-0.5, 2.0);
+  const Eigen::VectorXd tau = rb::inverse_dynamics(md, Eigen::VectorXd(q), Eigen::VectorXd(qdot), qddot);
+  EXPECT_LE((rb::forward_dynamics(md, Eigen::VectorXd(q), Eigen::VectorXd(qdot), tau) - qddot).cwiseAbs().maxCoeff(),
+            1e-13);
+}
+
+TEST(robots, a_slider_carries_its_own_and_its_childrens_mass) {
+  // A prismatic joint along a skew axis under a revolute one: M(slide) = m2 + m3 whatever
+  // the angle, and gravity's force along the slide is -(m2 + m3) g . a_world.
+  rb::robot r;
+  r.links.push_back({"base", std::nullopt});
+  rb::inertial b;
+  b.mass = 3;
+  b.inertia = Eigen::Vector3d(1, 1, 1).asDiagonal();
+  r.links.push_back({"carriage", b});
+  b.mass = 0.5;
+  b.origin.xyz = {0.25, 0, 0};
+  r.links.push_back({"arm", b});
+  rb::joint slide;
+  slide.name = "slide";
+  slide.type = rb::joint_type::prismatic;
+  slide.parent = "base";
+  slide.child = "carriage";
+  slide.axis = Eigen::Vector3d(0, 0.6, 0.8);
+  r.joints.push_back(slide);
+  rb::joint spin;
+  spin.name = "spin";
+  spin.parent = "carriage";
+  spin.child = "arm";
+  spin.axis = {0, 0, 1};
+  r.joints.push_back(spin);
+  const rb::robot_model<double> m(r);
+  for (const double angle : {0.0, 1.0, -2.5}) {
+    const Eigen::VectorXd q = Eigen::Vector2d(0.3, angle), zero = Eigen::Vector2d::Zero();
+    const Eigen::MatrixXd mm = rb::mass_matrix(m, q);
+    EXPECT_NEAR(mm(0, 0), 3.5, 4 * 0x1p-52 * 3.5) << angle;
+    EXPECT_NEAR(rb::gravity_forces(m, q)(0), 3.5 * 9.81 * 0.8, 16 * 0x1p-52 * 3.5 * 9.81) << angle;
+  }
+}
+
+TEST(robots, a_description_that_is_not_a_robot_is_refused_by_name) {
+  const rb::robot good = two_link_arm(2, 1.5, 1, 0.5, 0.375, 0.25, 0.0625);
+  const auto refused = [](rb::robot r, const std::string& words) {
+    try {
+      rb::validate(r);
+      ADD_FAILURE() << "accepted; expected: " << words;
+    } catch (const rb::robot_error& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  rb::robot r = good;
+  r.joints[1].axis = {0, 2, 0};
+  refused(r, "joint elbow: axis (0, 2, 0) is not a unit vector");
+  r = good;
+  r.joints[1].axis = {0, 0, 0};
+  refused(r, "is not a unit vector");
+  r = good;
+  r.links[2].body->mass = -1;
+  refused(r, "link fore: mass -1 is negative");
+  r = good;
+  r.links[2].body->mass = 0;
+  refused(r, "link fore: mass 0 on a moving link must be positive");
+  r = good;
+  r.links[2].body->inertia = Eigen::Vector3d(1, 1, 3).asDiagonal();
+  refused(r, "triangle inequality");
+  r = good;
+  r.links[2].body->inertia(0, 1) = 0.01;
+  refused(r, "not symmetric");
+  r = good;
+  r.joints[0].parent = "fore";  // upper <- fore <- upper: a loop, no root
+  refused(r, "loop");
+  r = good;
+  r.joints[1].parent = "nowhere";
+  refused(r, "its parent \"nowhere\" is not a link");
+  r = good;
+  r.links.push_back({"stray", std::nullopt});
+  refused(r, "both have no parent");
+  r = good;
+  r.joints[1].parent = "base";
+  r.joints[1].child = "upper";
+  refused(r, "link upper already has a parent (joint shoulder)");
+  r = good;
+  r.joints[1].child = "upper";
+  refused(r, "link upper is its own parent");
+}
+
+TEST(robots, urdf_round_trips_every_number_and_refuses_what_is_not_urdf) {
+  EXPECT_EQ(seeded_check(100, [] {
+    const rb::robot r = *generators::random_robots(8);
+    const rb::robot back = audit::parse_urdf(audit::to_urdf(r), "round trip");
+    RC_ASSERT(back.links.size() == r.links.size());
+    RC_ASSERT(back.joints.size() == r.joints.size());
+    RC_ASSERT(back.gravity == r.gravity);
+    for (std::size_t i = 0; i < r.links.size(); ++i) {
+      RC_ASSERT(back.links[i].name == r.links[i].name);
+      RC_ASSERT(back.links[i].body.has_value() == r.links[i].body.has_value());
+      if (!r.links[i].body) continue;
+      RC_ASSERT(back.links[i].body->mass == r.links[i].body->mass);
+      RC_ASSERT(back.links[i].body->inertia == r.links[i].body->inertia);
+      RC_ASSERT(back.links[i].body->origin.xyz == r.links[i].body->origin.xyz);
+      RC_ASSERT(back.links[i].body->origin.rpy == r.links[i].body->origin.rpy);
+    }
+    for (std::size_t j = 0; j < r.joints.size(); ++j) {
+      const rb::joint &a = r.joints[j], &b = back.joints[j];
+      RC_ASSERT(a.name == b.name && a.parent == b.parent && a.child == b.child && a.type == b.type);
+      RC_ASSERT(a.origin.xyz == b.origin.xyz && a.origin.rpy == b.origin.rpy);
+      if (a.type != rb::joint_type::fixed) RC_ASSERT(a.axis == b.axis);
+    }
+  }), "");
+  const auto refused = [](const std::string& text, const std::string& words) {
+    try {
+      audit::parse_urdf(text, "test.urdf");
+      ADD_FAILURE() << "accepted; expected: " << words;
+    } catch (const rb::robot_error& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  refused("not xml <", "test.urdf: not XML");
+  refused("<model/>", "not URDF: no <robot> element");
+  const std::string head = "<robot name='r'><link name='a'/><link name='b'><inertial><mass value='1'/>"
+                           "<inertia ixx='1' ixy='0' ixz='0' iyy='1' iyz='0' izz='1'/></inertial></link>";
+  refused(head + "<joint name='j' type='floating'><parent link='a'/><child link='b'/></joint></robot>",
+          "joint j: type floating is not modelled");
+  refused(head + "<joint name='j' type='hinge'><parent link='a'/><child link='b'/></joint></robot>",
+          "joint j: unknown type \"hinge\"");
+  refused(head + "<joint name='j' type='revolute'><parent link='a'/><child link='b'/><axis xyz='0 1'/></joint></robot>",
+          "joint j axis: \"0 1\" has 2 numbers, 3 expected");
+  refused(head + "<joint name='j' type='revolute'><parent link='a'/><child link='b'/>"
+                 "<origin xyz='0 0 x'/></joint></robot>",
+          "joint j origin xyz: \"x\" is not a number");
+  refused(head + "<joint name='j' type='revolute'><parent link='a'/><child link='c'/></joint></robot>",
+          "its child \"c\" is not a link");
+}
+
+/// A library that computes with a description changed by `wrong`: what the check must catch.
+audit::dynamics_library wrong_library(std::function<void(rb::robot&)> wrong) {
+  struct model final : audit::dynamics_model {
+    rb::robot_model<double> m;
+    explicit model(rb::robot r) : m(std::move(r)) {}
+    std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override { return rb::mass_matrix(m, q); }
+    std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd& q, const Eigen::VectorXd& v) override {
+      return rb::bias_forces(m, q, v);
+    }
+    std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                           const Eigen::VectorXd& a) override {
+      return rb::inverse_dynamics(m, q, v, a);
+    }
+    std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                           const Eigen::VectorXd& t) override {
+      return rb::forward_dynamics(m, q, v, t);
+    }
+  };
+  audit::dynamics_library l;
+  l.name = "wrong";
+  l.load = [wrong](const rb::robot& r) -> std::unique_ptr<audit::dynamics_model> {
+    rb::robot changed = r;
+    wrong(changed);
+    return std::make_unique<model>(changed);
+  };
+  return l;
+}
+
+audit::dynamics_state state_of(const generators::robot_case& c) {
+  audit::dynamics_state x;
+  x.q = generators::to_tier<double>(c.q);
+  x.qdot = generators::to_tier<double>(c.qdot);
+  x.qddot = generators::to_tier<double>(c.qddot);
+  x.tau = generators::to_tier<double>(c.tau);
+  return x;
+}
+
+TEST(dynamics_audit, the_reference_in_double_is_within_its_budget_and_wrong_libraries_are_not) {
+  // The reference's own double evaluation passes; a transposed inertia rotation, an axis
+  // taken in the parent's frame and a parallel-axis sign each fail on the arm.
+  const rb::robot arm = [] {
+    rb::robot r = two_link_arm(2, 1.5, 1, 0.5, 0.375, 0.25, 0.0625);
+    r.links[2].body->origin.rpy = {0.3, -0.2, 0.5};
+    r.links[2].body->inertia << 0.125, 0.01, 0, 0.01, 0.0625, 0.02, 0, 0.02, 0.09;
+    r.joints[1].origin.rpy = {0, 0.4, 0};
+    r.joints[1].axis = Eigen::Vector3d(0.6, 0.8, 0);
+    return r;
+  }();
+  audit::dynamics_state x;
+  x.q = Eigen::Vector2d(0.3, -0.7);
+  x.qdot = Eigen::Vector2d(1.1, 0.4);
+  x.qddot = Eigen::Vector2d(-0.5, 2.0);
+  x.tau = Eigen::Vector2d(3.0, -1.0);
+  const audit::dynamics_check right = audit::check_dynamics(wrong_library([](rb::robot&) {}), arm, x);
+  ASSERT_EQ(right.residuals.size(), 4u);
+  for (const auto& r : right.residuals)
+    EXPECT_TRUE(r.within()) << audit::dynamics_quantity_name(r.quantity) << ": " << r.residual << " eps";
+  const auto fails = [&](const char* what, std::function<void(rb::robot&)> change) {
+    const audit::dynamics_check c = audit::check_dynamics(wrong_library(change), arm, x);
+    bool any = false;
+    for (const auto& r : c.residuals) any = any || !r.within();
+    EXPECT_TRUE(any) << what;
+  };
+  fails("a transposed inertia rotation", [](rb::robot& r) {
+    r.links[2].body->origin.rpy = -r.links[2].body->origin.rpy;
+  });
+  fails("the axis in the parent's frame", [](rb::robot& r) {
+    r.joints[1].axis = rb::rpy_rotation<double>(r.joints[1].origin.rpy) * r.joints[1].axis;
+  });
+  fails("the centre of mass on the other side", [](rb::robot& r) { r.links[1].body->origin.xyz *= -1; });
+}
+
+#ifdef MECHCHECK_HAVE_KDL
+TEST(dynamics_audit, kdl_gives_the_two_link_arms_closed_form) {
+  const double m1 = 2, m2 = 1.5, l1 = 1, c1 = 0.5, c2 = 0.375, i1 = 0.25, i2 = 0.0625, g = 9.81;
+  const rb::robot r = two_link_arm(m1, m2, l1, c1, c2, i1, i2);
+  audit::dynamics_state x;
+  x.q = Eigen::Vector2d(0.3, -0.7);
+  x.qdot = Eigen::Vector2d(1.1, 0.4);
+  x.qddot = Eigen::Vector2d(-0.5, 2.0);
+  x.tau = Eigen::Vector2d(3.0, -1.0);
+  const audit::dynamics_check c = audit::check_dynamics(audit::kdl_dynamics(), r, x);
+  ASSERT_TRUE(c.refused.empty()) << c.refused;
+  ASSERT_EQ(c.residuals.size(), 4u);
+  const arm_closed_form want = arm_terms(m1, m2, l1, c1, c2, i1, i2, g, Eigen::Vector2d(x.q), Eigen::Vector2d(x.qdot));
+  EXPECT_LE((c.residuals[0].library - want.m).cwiseAbs().maxCoeff(), 32 * 0x1p-52 * want.m.cwiseAbs().maxCoeff());
+  for (const auto& res : c.residuals)
+    EXPECT_TRUE(res.within()) << audit::dynamics_quantity_name(res.quantity) << ": " << res.residual << " eps of budget "
+                              << res.budget;
+}
+
+TEST(dynamics_audit, kdl_holds_to_the_lagrangian_on_random_robots) {
+  // Every quantity within 16 n eps of its scale; a failure prints the minimal robot as URDF.
+  EXPECT_EQ(seeded_check(200, [] {
+    const generators::robot_case c = *generators::robot_cases(8);
+    const audit::dynamics_check check = audit::check_dynamics(audit::kdl_dynamics(), c.robot, state_of(c));
+    RC_ASSERT(check.refused.empty());
+    for (const auto& r : check.residuals) {
+      RC_TAG(audit::dynamics_quantity_name(r.quantity));
+      if (!r.within())
+        RC_FAIL(std::string(audit::dynamics_quantity_name(r.quantity)) + ": residual " + std::to_string(r.residual) +
+                " eps of its scale " + std::to_string(r.scale) + ", budget " + std::to_string(r.budget) +
+                "\nthe robot:\n" + audit::to_urdf(c.robot));
+    }
+  }), "");
+}
+#endif
+
+}  // namespace robots_test
