@@ -1,6 +1,6 @@
 // Robots: the Lagrangian reference against closed forms (a two-link arm, a slider), the
-// description's validation and its URDF round trip, and the dynamics audit: KDL (where
-// found) against the reference on random robots, and a wrong library caught.
+// description's validation and its URDF round trip, and the dynamics audit: every library
+// this build found against the closed form and on random robots, and a wrong library caught.
 
 #include <gtest/gtest.h>
 
@@ -15,9 +15,6 @@
 #include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/harness/generators.hpp"
 #include "mechcheck/robots.hpp"
-#ifdef MECHCHECK_HAVE_KDL
-#include "mechcheck/audit/adapters/kdl.hpp"
-#endif
 
 namespace robots_test {
 using namespace mechcheck;
@@ -322,8 +319,7 @@ TEST(dynamics_audit, the_reference_in_double_is_within_its_budget_and_wrong_libr
   fails("the centre of mass on the other side", [](rb::robot& r) { r.links[1].body->origin.xyz *= -1; });
 }
 
-#ifdef MECHCHECK_HAVE_KDL
-TEST(dynamics_audit, kdl_gives_the_two_link_arms_closed_form) {
+TEST(dynamics_audit, every_library_gives_the_two_link_arms_closed_form) {
   const double m1 = 2, m2 = 1.5, l1 = 1, c1 = 0.5, c2 = 0.375, i1 = 0.25, i2 = 0.0625, g = 9.81;
   const rb::robot r = two_link_arm(m1, m2, l1, c1, c2, i1, i2);
   audit::dynamics_state x;
@@ -331,31 +327,34 @@ TEST(dynamics_audit, kdl_gives_the_two_link_arms_closed_form) {
   x.qdot = Eigen::Vector2d(1.1, 0.4);
   x.qddot = Eigen::Vector2d(-0.5, 2.0);
   x.tau = Eigen::Vector2d(3.0, -1.0);
-  const audit::dynamics_check c = audit::check_dynamics(audit::kdl_dynamics(), r, x);
-  ASSERT_TRUE(c.refused.empty()) << c.refused;
-  ASSERT_EQ(c.residuals.size(), 4u);
   const arm_closed_form want = arm_terms(m1, m2, l1, c1, c2, i1, i2, g, Eigen::Vector2d(x.q), Eigen::Vector2d(x.qdot));
-  EXPECT_LE((c.residuals[0].library - want.m).cwiseAbs().maxCoeff(), 32 * 0x1p-52 * want.m.cwiseAbs().maxCoeff());
-  for (const auto& res : c.residuals)
-    EXPECT_TRUE(res.within()) << audit::dynamics_quantity_name(res.quantity) << ": " << res.residual << " eps of budget "
-                              << res.budget;
+  for (const audit::dynamics_library& library : audit::dynamics_found()) {
+    const audit::dynamics_check c = audit::check_dynamics(library, r, x);
+    ASSERT_TRUE(c.refused.empty()) << library.name << ": " << c.refused;
+    ASSERT_EQ(c.residuals.size(), 4u) << library.name;
+    EXPECT_LE((c.residuals[0].library - want.m).cwiseAbs().maxCoeff(), 32 * 0x1p-52 * want.m.cwiseAbs().maxCoeff())
+        << library.name;
+    for (const auto& res : c.residuals)
+      EXPECT_TRUE(res.within()) << library.name << ": " << audit::dynamics_quantity_name(res.quantity) << ": "
+                                << res.residual << " eps of budget " << res.budget;
+  }
 }
 
-TEST(dynamics_audit, kdl_holds_to_the_lagrangian_on_random_robots) {
+TEST(dynamics_audit, every_library_holds_to_the_lagrangian_on_random_robots) {
   // Every quantity within 16 n eps of its scale; a failure prints the minimal robot as URDF.
-  EXPECT_EQ(seeded_check(200, [] {
-    const generators::robot_case c = *generators::robot_cases(8);
-    const audit::dynamics_check check = audit::check_dynamics(audit::kdl_dynamics(), c.robot, state_of(c));
-    RC_ASSERT(check.refused.empty());
-    for (const auto& r : check.residuals) {
-      RC_TAG(audit::dynamics_quantity_name(r.quantity));
-      if (!r.within())
-        RC_FAIL(std::string(audit::dynamics_quantity_name(r.quantity)) + ": residual " + std::to_string(r.residual) +
-                " eps of its scale " + std::to_string(r.scale) + ", budget " + std::to_string(r.budget) +
-                "\nthe robot:\n" + audit::to_urdf(c.robot));
-    }
-  }), "");
+  for (const audit::dynamics_library& library : audit::dynamics_found())
+    EXPECT_EQ(seeded_check(100, [&library] {
+                const generators::robot_case c = *generators::robot_cases(8);
+                const audit::dynamics_check check = audit::check_dynamics(library, c.robot, state_of(c));
+                RC_ASSERT(check.refused.empty());
+                for (const auto& r : check.residuals)
+                  if (!r.within())
+                    RC_FAIL(library.name + ": " + audit::dynamics_quantity_name(r.quantity) + ": residual " +
+                            std::to_string(r.residual) + " eps of its scale " + std::to_string(r.scale) + ", budget " +
+                            std::to_string(r.budget) + "\nthe robot:\n" + audit::to_urdf(c.robot));
+              }),
+              "")
+        << library.name;
 }
-#endif
 
 }  // namespace robots_test

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 
+#include <Eigen/Geometry>
 #include <mechcheck/audit/engines.hpp>
 
 namespace {
