@@ -79,7 +79,10 @@ dynamics_campaign campaign(const dynamics_library& library, const dynamics_optio
         s << dynamics_quantity_name(r.quantity) << ": residual " << r.residual << " eps of its scale " << r.scale
           << " (budget " << r.budget << ")\n  q = " << vector_text(state_of(rc).q) << "\n  qdot = " << vector_text(state_of(rc).qdot)
           << "\n  qddot = " << vector_text(state_of(rc).qddot) << "\n  tau = " << vector_text(state_of(rc).tau)
-          << "\n  " << library.name << ": " << vector_text(r.library) << "\n  reference: " << vector_text(r.reference);
+          << "\n  " << library.name << ": " << vector_text(r.library) << "\n  reference: " << vector_text(r.reference)
+          << "\n  seed " << opt.seed << ", " << opt.robots << " robots of at most " << opt.max_links
+          << " links (mechcheck-audit --dynamics " << library.name << " --robots " << opt.robots << " --seed " << opt.seed
+          << " finds and shrinks it again)";
         c.disagreement = s.str();
         c.counterexample_urdf = to_urdf(rc.robot);
         RC_FAIL(c.disagreement);
