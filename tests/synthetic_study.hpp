@@ -37,13 +37,13 @@ struct synthetic {
 };
 
 /// The exponent log2(e(h)/e(h/2)) of the model at h.
-double exact_exponent(const std::function<double(double)>& e, double h) {
+inline double exact_exponent(const std::function<double(double)>& e, double h) {
   return std::log2(e(h) / e(h / 2));
 }
 
 /// The median of the exact exponents of the last three halvings whose errors both exceed
 /// `resolvable`, over h = 1/4, 1/8, ... while e(h) stays at or above `stop`.
-double expected_fit(const std::function<double(double)>& e, double resolvable, long max_steps) {
+inline double expected_fit(const std::function<double(double)>& e, double resolvable, long max_steps) {
   std::vector<double> ex;
   for (long n = 4; 2 * n <= max_steps; n *= 2) {
     const double h = 1.0 / double(n);
