@@ -158,22 +158,6 @@ engine_observation observe(const scenario& s, const body_reading& r) {
   return o;
 }
 
-double engine_run::trajectory(double h, long n, const std::function<void(long, const body_reading&)>& each, bool timed) {
-  using clock = std::chrono::steady_clock;
-  double seconds = 0;
-  for (long k = 1; k <= n; ++k) {
-    if (timed) {
-      const auto t0 = clock::now();
-      step(h);
-      seconds += std::chrono::duration<double>(clock::now() - t0).count();
-    } else {
-      step(h);
-    }
-    each(k, read());
-  }
-  return seconds;
-}
-
 namespace {
 /// The halving studies of a scenario: every observable together, then each class. The
 /// runs (n steps to t_end) are cached by n, so that the classes share them: the longest

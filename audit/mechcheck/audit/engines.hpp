@@ -25,6 +25,7 @@
 /// refused by name (scenario_refused); a start that throws anything else is a recorded
 /// failure of that scenario, never an exception out of the audit.
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -100,7 +101,21 @@ class engine_run {
   /// (the long run). A failure at step k throws after each() has seen steps 1 .. k - 1.
   /// With `timed`, returns the wall time spent in the steps alone, in seconds (an engine in
   /// another process measures it there: the protocol's cost is not the engine's); else 0.
-  virtual double trajectory(double h, long n, const std::function<void(long, const body_reading&)>& each, bool timed);
+  virtual double trajectory(double h, long n, const std::function<void(long, const body_reading&)>& each, bool timed) {
+    using clock = std::chrono::steady_clock;
+    double seconds = 0;
+    for (long k = 1; k <= n; ++k) {
+      if (timed) {
+        const auto t0 = clock::now();
+        step(h);
+        seconds += std::chrono::duration<double>(clock::now() - t0).count();
+      } else {
+        step(h);
+      }
+      each(k, read());
+    }
+    return seconds;
+  }
   /// Non-empty: the engine integrates another model than the scenario's, and how (a loop
   /// closed by a soft constraint): the order studies then measure the distance between the
   /// models and say nothing of the integrator's order, which they do not judge.
