@@ -248,10 +248,15 @@ TEST(robots, urdf_round_trips_every_number_and_refuses_what_is_not_urdf) {
 }
 
 /// A library that computes with a description changed by `wrong`: what the check must catch.
-audit::dynamics_library wrong_library(std::function<void(rb::robot&)> wrong) {
+/// A library computing exactly (robots/dynamics.hpp in double) with the robot changed by
+/// `wrong`; with `declares`, it says it holds the changed robot (held_robot).
+audit::dynamics_library wrong_library(std::function<void(rb::robot&)> wrong, bool declares = false) {
   struct model final : audit::dynamics_model {
+    rb::robot held;
     rb::robot_model<double> m;
-    explicit model(rb::robot r) : m(std::move(r)) {}
+    bool declares;
+    model(rb::robot r, bool d) : held(r), m(std::move(r)), declares(d) {}
+    std::optional<rb::robot> held_robot() const override { return declares ? std::optional<rb::robot>(held) : std::nullopt; }
     std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override { return rb::mass_matrix(m, q); }
     std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd& q, const Eigen::VectorXd& v) override {
       return rb::bias_forces(m, q, v);
@@ -267,10 +272,10 @@ audit::dynamics_library wrong_library(std::function<void(rb::robot&)> wrong) {
   };
   audit::dynamics_library l;
   l.name = "wrong";
-  l.load = [wrong](const rb::robot& r) -> std::unique_ptr<audit::dynamics_model> {
+  l.load = [wrong, declares](const rb::robot& r) -> std::unique_ptr<audit::dynamics_model> {
     rb::robot changed = r;
     wrong(changed);
-    return std::make_unique<model>(changed);
+    return std::make_unique<model>(changed, declares);
   };
   return l;
 }
@@ -319,6 +324,35 @@ TEST(dynamics_audit, the_reference_in_double_is_within_its_budget_and_wrong_libr
   fails("the centre of mass on the other side", [](rb::robot& r) { r.links[1].body->origin.xyz *= -1; });
 }
 
+TEST(dynamics_audit, a_library_that_holds_another_robot_is_judged_on_it_and_the_difference_measured) {
+  // MuJoCo's compiler changes a link's inertia by about 1e-8 relative (docs/findings/dynamics.md):
+  // a library that computes exactly with such a changed robot disagrees with the given robot's
+  // Lagrangian unless it says which robot it holds; then it agrees with that robot's, and the
+  // distance between the two robots' mass matrices is measured in eps of the scale.
+  const rb::robot arm = two_link_arm(2, 1.5, 1, 0.5, 0.375, 0.25, 0.0625);
+  audit::dynamics_state x;
+  x.q = Eigen::Vector2d(0.3, -0.7);
+  x.qdot = Eigen::Vector2d(1.1, 0.4);
+  x.qddot = Eigen::Vector2d(-0.5, 2.0);
+  x.tau = Eigen::Vector2d(3.0, -1.0);
+  const double delta = 0x1p-26;  // 1.5e-8 of the forearm's moment about its hinge (y), 1/16
+  const auto changed = [delta](rb::robot& r) { r.links[2].body->inertia(1, 1) *= 1 + delta; };
+  const audit::dynamics_check silent = audit::check_dynamics(wrong_library(changed), arm, x);
+  EXPECT_FALSE(silent.model_difference);
+  bool any = false;
+  for (const auto& r : silent.residuals) any = any || !r.within();
+  EXPECT_TRUE(any) << "a changed robot not declared";
+  const audit::dynamics_check declared = audit::check_dynamics(wrong_library(changed, true), arm, x);
+  for (const auto& r : declared.residuals)
+    EXPECT_TRUE(r.within()) << audit::dynamics_quantity_name(r.quantity) << ": " << r.residual << " eps";
+  ASSERT_TRUE(declared.model_difference);
+  // Every entry of M holds i2 once (both hinges are about y): the change is delta i2 = 2^-30
+  // exactly, over eps and the scale of M; each M is rounded once to double before the
+  // difference, half an ulp of its largest entry each: under 1 eps of the scale together.
+  const double want = 0x1p-30 / (0x1p-52 * declared.model_scale);
+  EXPECT_NEAR(*declared.model_difference, want, 1.0);
+}
+
 TEST(dynamics_audit, every_library_gives_the_two_link_arms_closed_form) {
   const double m1 = 2, m2 = 1.5, l1 = 1, c1 = 0.5, c2 = 0.375, i1 = 0.25, i2 = 0.0625, g = 9.81;
   const rb::robot r = two_link_arm(m1, m2, l1, c1, c2, i1, i2);
@@ -342,11 +376,16 @@ TEST(dynamics_audit, every_library_gives_the_two_link_arms_closed_form) {
 
 TEST(dynamics_audit, every_library_holds_to_the_lagrangian_on_random_robots) {
   // Every quantity within 16 n eps of its scale; a failure prints the minimal robot as URDF.
-  for (const audit::dynamics_library& library : audit::dynamics_found())
-    EXPECT_EQ(seeded_check(100, [&library] {
+  // 25 robots a library (ci/test runs the command on 100 more); a robot the library refuses
+  // by its own rule (MuJoCo's A + B >= C on the moments it computed) is not counted, and at
+  // least half must be run.
+  for (const audit::dynamics_library& library : audit::dynamics_found()) {
+    int run = 0;
+    EXPECT_EQ(seeded_check(25, [&library, &run] {
                 const generators::robot_case c = *generators::robot_cases(8);
                 const audit::dynamics_check check = audit::check_dynamics(library, c.robot, state_of(c));
-                RC_ASSERT(check.refused.empty());
+                if (!check.refused.empty()) return;
+                ++run;
                 for (const auto& r : check.residuals)
                   if (!r.within())
                     RC_FAIL(library.name + ": " + audit::dynamics_quantity_name(r.quantity) + ": residual " +
@@ -355,6 +394,8 @@ TEST(dynamics_audit, every_library_holds_to_the_lagrangian_on_random_robots) {
               }),
               "")
         << library.name;
+    EXPECT_GE(run, 13) << library.name << " refused " << 25 - run << " of 25 robots";
+  }
 }
 
 }  // namespace robots_test

@@ -109,7 +109,13 @@ dynamics_check check_dynamics(const dynamics_library& library, const robots::rob
     out.refused = e.what();
     return out;
   }
-  const exact_terms e = exact(robot, x);
+  const std::optional<robots::robot> held = model->held_robot();
+  const exact_terms e = exact(held ? *held : robot, x);
+  if (held) {
+    const exact_terms given = exact(robot, x);
+    out.model_difference = max_abs(e.mass - given.mass) / (eps * given.scale_m);
+    out.model_scale = given.scale_m;
+  }
   const std::string who = library.name + " on robot " + robot.name;
   if (const auto m = model->mass_matrix(x.q))
     out.residuals.push_back(residual_of(dynamics_quantity::mass_matrix, *m, e.mass, e.scale_m, e.moving_links, who));

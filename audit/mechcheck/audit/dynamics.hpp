@@ -48,6 +48,13 @@ const char* dynamics_quantity_name(dynamics_quantity q);
 class dynamics_model {
  public:
   virtual ~dynamics_model() = default;
+  /// The robot as the library holds it, where its model builder changes the robot it was
+  /// given (MuJoCo's compiler turns each inertia tensor into principal moments and a frame by
+  /// an iteration that stops short of double precision; its URDF import fuses links joined
+  /// by fixed joints): the quantities are then held to this robot's Lagrangian, and the
+  /// distance between the two robots is reported apart (dynamics_check::model_difference).
+  /// Its moving joints in the order of the robot's coordinates. None: the robot as given.
+  virtual std::optional<robots::robot> held_robot() const { return std::nullopt; }
   virtual std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) = 0;
   virtual std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) = 0;
   virtual std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
@@ -79,10 +86,16 @@ struct dynamics_residual {
 };
 
 /// Every quantity the library offers for the robot at the state; empty when it refuses
-/// the robot (the reason in `refused`).
+/// the robot (the reason in `refused`). Where the library holds another robot than the one
+/// given (dynamics_model::held_robot), the residuals are against the held robot's Lagrangian
+/// and `model_difference` is max |M_held - M_given| / (eps scale of M_given), both mass
+/// matrices exact: how far the robot the library computes with is from the robot it was
+/// given, in the units of the residuals.
 struct dynamics_check {
   std::vector<dynamics_residual> residuals;
   std::string refused;
+  std::optional<double> model_difference;
+  double model_scale = 0;  ///< the scale of M_given, for model_difference
 };
 
 /// The library against the exact Lagrangian on one robot and state. A library's failure
@@ -99,6 +112,7 @@ dynamics_residual reference_only(dynamics_quantity quantity, const robots::robot
 struct dynamics_campaign {
   std::string library, origin;
   int robots = 0, refused = 0;
+  std::string first_refusal;  ///< the library's reason for the first robot it refused
   std::uint64_t seed = 0;
   int max_links = 8;
   struct quantity_figure {
@@ -108,6 +122,12 @@ struct dynamics_campaign {
     double budget = 0;    ///< the budget at the largest
   };
   std::vector<quantity_figure> figures;
+  /// Where the library holds another robot than the one given: the largest
+  /// model_difference (eps of the mass matrix's scale) and the robot where it was largest,
+  /// as URDF. A measurement of the model builder, not a verdict on the quantities.
+  int model_checked = 0;
+  double model_largest = 0, model_largest_scale = 0;
+  std::string model_largest_urdf;
   std::string disagreement;  ///< "" when every quantity stayed within its budget
   std::string counterexample_urdf;
   std::string note;          ///< a library's failure (an error, a non-finite value), if any

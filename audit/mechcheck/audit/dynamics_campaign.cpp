@@ -61,7 +61,15 @@ dynamics_campaign campaign(const dynamics_library& library, const dynamics_optio
     }
     if (!failed) {
       ++c.robots;
-      if (!check.refused.empty()) ++c.refused;
+      if (!check.refused.empty() && !c.refused++) c.first_refusal = check.refused;
+      if (check.model_difference) {
+        ++c.model_checked;
+        if (*check.model_difference >= c.model_largest) {
+          c.model_largest = *check.model_difference;
+          c.model_largest_scale = check.model_scale;
+          c.model_largest_urdf = to_urdf(rc.robot);
+        }
+      }
       for (const auto& r : check.residuals)
         for (auto& f : c.figures)
           if (f.quantity == r.quantity) {
@@ -150,7 +158,14 @@ void print_dynamics(std::ostream& out, const std::vector<dynamics_campaign>& cam
                     verdict_of(c, f).c_str());
       out << line;
     }
-    if (c.refused) out << "  " << c.library << " refused " << c.refused << " of " << c.robots << " robots (a quantity it does not offer on them)\n";
+    if (c.model_checked) {
+      std::snprintf(line, sizeof line, "%-10s %-18s %7d %12s %8s  %s\n", c.library.c_str(), "held robot", c.model_checked,
+                    sci(c.model_largest).c_str(), "-", "(its M against the given robot's)");
+      out << line;
+    }
+    if (c.refused)
+      out << "  " << c.library << " refused " << c.refused << " of " << c.robots << " robots (the first: " << c.first_refusal
+          << ")\n";
     if (!c.note.empty()) out << "  " << c.library << " failed: " << c.note << "\n";
     if (!c.disagreement.empty()) out << "  " << c.library << ", shrunk: " << c.disagreement << "\n";
   }
@@ -161,14 +176,17 @@ std::vector<std::string> write_dynamics_report(const std::string& directory, con
   fs::create_directories(directory);
   std::vector<std::string> written;
   nlohmann::ordered_json j = nlohmann::ordered_json::array();
-  std::ostringstream md;
+  std::ostringstream md, after;
   md << "# Equations of motion against the exact Lagrangian\n\n"
      << "Residual: max |library - reference| / (eps scale), eps = 2^-52, the reference in mpfr50 rounded once "
         "(docs/audit.md, \"Equations of motion\").\n\n"
      << "| library | quantity | robots | largest residual | budget | verdict |\n|---|---|---:|---:|---:|---|\n";
   for (const auto& c : campaigns) {
+    std::string stem = c.library;  // "kdl on arm": a file name without spaces
+    std::replace(stem.begin(), stem.end(), ' ', '-');
     nlohmann::ordered_json e = {{"library", c.library}, {"origin", c.origin}, {"seed", c.seed}, {"robots", c.robots},
                                 {"refused", c.refused}, {"max_links", c.max_links}};
+    if (c.refused) e["first_refusal"] = c.first_refusal;
     nlohmann::ordered_json fig = nlohmann::ordered_json::array();
     for (const auto& f : c.figures) {
       fig.push_back({{"quantity", dynamics_quantity_name(f.quantity)}, {"checked", f.checked}, {"largest", f.largest},
@@ -177,18 +195,35 @@ std::vector<std::string> write_dynamics_report(const std::string& directory, con
          << (f.checked ? sci(f.largest) : "-") << " | " << (f.checked ? sci(f.budget) : "-") << " | " << verdict_of(c, f) << " |\n";
     }
     e["quantities"] = fig;
+    if (c.model_checked) {
+      const std::string file = (fs::path(directory) / (stem + "-held-robot-largest.urdf")).string();
+      std::ofstream(file) << c.model_largest_urdf;
+      written.push_back(file);
+      e["held_robot"] = {{"checked", c.model_checked}, {"largest_difference", c.model_largest},
+                         {"scale", c.model_largest_scale},
+                         {"robot", fs::path(file).filename().string()}};
+      md << "| " << c.library << " | held robot (its M against the given robot's) | " << c.model_checked << " | "
+         << sci(c.model_largest) << " | - | measured |\n";
+    }
     if (!c.note.empty()) e["failure"] = c.note;
     if (!c.disagreement.empty()) e["disagreement"] = c.disagreement;
     if (!c.counterexample_urdf.empty()) {
-      const std::string file = (fs::path(directory) / (c.library + "-counterexample.urdf")).string();
+      const std::string file = (fs::path(directory) / (stem + "-counterexample.urdf")).string();
       std::ofstream(file) << c.counterexample_urdf;
       written.push_back(file);
       e["counterexample"] = fs::path(file).filename().string();
-      md << "\n" << c.library << ", shrunk counterexample (" << fs::path(file).filename().string() << "):\n\n```\n"
-         << (c.note.empty() ? c.disagreement : c.note) << "\n```\n\n";
+      after << "\n" << c.library << ", shrunk counterexample (" << fs::path(file).filename().string() << "):\n\n```\n"
+            << (c.note.empty() ? c.disagreement : c.note) << "\n```\n";
     }
     j.push_back(e);
   }
+  // The held robots and the counterexamples after the table, which they would break.
+  for (const auto& c : campaigns)
+    if (c.model_checked)
+      md << "\n" << c.library << " computes with the robot as it holds it (the residuals are against that robot's "
+         << "Lagrangian); its exact mass matrix differs from the given robot's by up to " << sci(c.model_largest)
+         << " eps of the scale (the robot where it is largest: the file held_robot.robot of dynamics.json).\n";
+  md << after.str();
   const std::string json_file = (fs::path(directory) / "dynamics.json").string();
   std::ofstream(json_file) << j.dump(2) << "\n";
   const std::string md_file = (fs::path(directory) / "dynamics.md").string();

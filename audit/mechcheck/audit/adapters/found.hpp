@@ -98,6 +98,10 @@ inline std::vector<dynamics_library> dynamics_found() {
 #ifdef MECHCHECK_HAVE_KDL
   all.push_back(kdl_dynamics());
 #endif
+#ifdef MECHCHECK_HAVE_MUJOCO
+  all.push_back(mujoco::dynamics());
+  all.push_back(mujoco::urdf_dynamics());
+#endif
   return all;
 }
 

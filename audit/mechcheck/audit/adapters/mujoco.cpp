@@ -1,4 +1,5 @@
 #include "mechcheck/audit/adapters/mujoco.hpp"
+#include "mechcheck/audit/adapters/detail/mujoco_load.hpp"
 
 #include <mujoco/mujoco.h>
 
@@ -50,8 +51,6 @@ void install_handlers() {
   static_cast<void>(done);
 }
 
-namespace {
-/// A model from an MJCF string, through MuJoCo's virtual file system (no file written).
 mjModel* load(const std::string& xml) {
   install_handlers();
   auto vfs = std::make_unique<mjVFS>();
@@ -66,6 +65,8 @@ mjModel* load(const std::string& xml) {
   if (!m) throw error(std::string("MuJoCo: mj_loadXML failed: ") + message);
   return m;
 }
+
+namespace {
 
 const char* integrator_xml(int integrator) {
   return integrator == mjINT_EULER ? "Euler" : integrator == mjINT_RK4 ? "RK4" : "implicit";

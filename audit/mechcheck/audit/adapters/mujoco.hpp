@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "mechcheck/audit/dynamics.hpp"
 #include "mechcheck/audit/engines.hpp"
 
 namespace mechcheck::audit::mujoco {
@@ -45,5 +46,14 @@ std::vector<engine_integrator> integrators();
 
 /// How mujoco computes the inertia of its shapes (engines.hpp, shapes()).
 engine_shapes shapes();
+
+/// MuJoCo's equations of motion (dynamics.hpp): mj_fullM of qM, qfrc_bias and qacc after
+/// mj_forward, qfrc_inverse after mj_inverse, on a model built from the robot as MJCF (each
+/// link a body at its joint's origin, its inertia turned into the body frame as
+/// fullinertia, which MuJoCo's compiler diagonalizes; hinge and slide joints; no armature,
+/// damping, limits or geoms). "mujoco-urdf": the same on the model MuJoCo's own URDF import
+/// makes of the robot's URDF (gravity set on mjModel::opt: URDF has none).
+dynamics_library dynamics();
+dynamics_library urdf_dynamics();
 
 }  // namespace mechcheck::audit::mujoco

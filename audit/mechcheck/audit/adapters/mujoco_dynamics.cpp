@@ -1,0 +1,241 @@
+// MuJoCo's equations of motion as dynamics_libraries (adapters/mujoco.hpp).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "mechcheck/audit/adapters/detail/mujoco_load.hpp"
+#include "mechcheck/audit/adapters/mujoco.hpp"
+#include "mechcheck/audit/problems/urdf.hpp"
+#include "mechcheck/robots/dynamics.hpp"
+
+namespace mechcheck::audit::mujoco {
+
+namespace {
+std::string num(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+std::string nums(const double* x, int n) {
+  std::string out;
+  for (int i = 0; i < n; ++i) out += (i ? " " : "") + num(x[i]);
+  return out;
+}
+
+/// A body's MJCF: its frame (the joint's origin: pos, quat w x y z of URDF's rpy), its
+/// inertial (the tensor turned into the body frame, R_o I R_o^T, about the centre of mass:
+/// fullinertia), its joint (hinge or slide along the axis, at the body's origin; none for a
+/// fixed joint: welded), its children.
+void body_xml(const robots::robot& r, const robots::tree& t, int link, int joint, std::string& out) {
+  const robots::link& l = r.links[std::size_t(link)];
+  if (joint >= 0) {
+    const robots::joint& j = r.joints[std::size_t(joint)];
+    const Eigen::Quaterniond q(robots::rpy_rotation<double>(j.origin.rpy));
+    const double quat[4] = {q.w(), q.x(), q.y(), q.z()};
+    out += "<body name=\"" + l.name + "\" pos=\"" + nums(j.origin.xyz.data(), 3) + "\" quat=\"" + nums(quat, 4) + "\">";
+    if (l.body) {
+      const Eigen::Matrix3d ro = robots::rpy_rotation<double>(l.body->origin.rpy);
+      const Eigen::Matrix3d i = ro * l.body->inertia * ro.transpose();
+      const double full[6] = {i(0, 0), i(1, 1), i(2, 2), (i(0, 1) + i(1, 0)) / 2, (i(0, 2) + i(2, 0)) / 2,
+                              (i(1, 2) + i(2, 1)) / 2};
+      out += "<inertial pos=\"" + nums(l.body->origin.xyz.data(), 3) + "\" mass=\"" + num(l.body->mass) +
+             "\" fullinertia=\"" + nums(full, 6) + "\"/>";
+    }
+    if (j.type != robots::joint_type::fixed)
+      out += std::string("<joint name=\"") + j.name + "\" type=\"" +
+             (j.type == robots::joint_type::prismatic ? "slide" : "hinge") + "\" pos=\"0 0 0\" axis=\"" +
+             nums(j.axis.data(), 3) + "\"/>";
+  }
+  for (std::size_t k = 0; k < r.joints.size(); ++k)
+    if (t.parent_link[k] == link) body_xml(r, t, t.child_link[k], static_cast<int>(k), out);
+  if (joint >= 0) out += "</body>";
+}
+
+/// Roll, pitch and yaw of a rotation, R = Rz(yaw) Ry(pitch) Rx(roll) (URDF's convention).
+Eigen::Vector3d rpy_of(const Eigen::Matrix3d& r) {
+  return {std::atan2(r(2, 1), r(2, 2)), std::atan2(-r(2, 0), std::hypot(r(2, 1), r(2, 2))), std::atan2(r(1, 0), r(0, 0))};
+}
+
+std::string robot_mjcf(const robots::robot& r) {
+  const robots::tree t = robots::validate(r);
+  std::string out = "<mujoco model=\"" + r.name +
+                    "\"><compiler angle=\"radian\" inertiafromgeom=\"false\"/><option gravity=\"" +
+                    nums(r.gravity.data(), 3) + "\"/><worldbody>";
+  body_xml(r, t, t.root, -1, out);
+  return out + "</worldbody></mujoco>";
+}
+
+class mujoco_model final : public dynamics_model {
+ public:
+  mujoco_model(const robots::robot& r, const std::string& xml) {
+    const robots::tree t = robots::validate(r);
+    n_ = t.dofs;
+    try {
+      m_.reset(load(xml));
+    } catch (const error& e) {
+      throw robot_refused(std::string("mujoco: ") + e.what());
+    }
+    for (int i = 0; i < 3; ++i) m_->opt.gravity[i] = r.gravity(i);  // URDF has none
+    d_.reset(mj_makeData(m_.get()));
+    if (m_->nv != n_)
+      throw robot_refused("mujoco: the model has " + std::to_string(m_->nv) + " degrees of freedom, the robot " +
+                          std::to_string(n_));
+    for (std::size_t j = 0; j < r.joints.size(); ++j) {
+      if (t.coordinate[j] < 0) continue;
+      const int id = mj_name2id(m_.get(), mjOBJ_JOINT, r.joints[j].name.c_str());
+      if (id < 0) throw robot_refused("mujoco: the model has no joint " + r.joints[j].name);
+      qpos_[t.coordinate[j]] = m_->jnt_qposadr[id];
+      dof_[t.coordinate[j]] = m_->jnt_dofadr[id];
+    }
+  }
+
+  /// The robot of MuJoCo's compiled model: a link a body (its mass, body_ipos and the
+  /// tensor R diag(body_inertia) R^T, R of body_iquat), a joint a body's frame in its
+  /// parent's (body_pos, body_quat as roll-pitch-yaw) with its hinge or slide along
+  /// jnt_axis, or fixed where the body has none; the moving joints in the order of the
+  /// robot's coordinates.
+  std::optional<robots::robot> held_robot() const override {
+    const mjModel* m = m_.get();
+    const auto body_name = [m](int b) {
+      const char* name = mj_id2name(m, mjOBJ_BODY, b);
+      return name && *name ? std::string(name) : "body" + std::to_string(b);
+    };
+    robots::robot r;
+    r.name = "mujoco";
+    for (int i = 0; i < 3; ++i) r.gravity(i) = m->opt.gravity[i];
+    std::vector<robots::joint> moving(static_cast<std::size_t>(n_)), fixed;
+    for (int b = 0; b < m->nbody; ++b) {
+      robots::link l;
+      l.name = body_name(b);
+      if (b > 0 && m->body_mass[b] > 0) {
+        robots::inertial in;
+        in.mass = m->body_mass[b];
+        for (int i = 0; i < 3; ++i) in.origin.xyz(i) = m->body_ipos[3 * b + i];
+        mjtNum rot[9];
+        mju_quat2Mat(rot, m->body_iquat + 4 * b);
+        const Eigen::Matrix3d r_i = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(rot);
+        in.inertia = r_i * Eigen::Vector3d(m->body_inertia + 3 * b).asDiagonal() * r_i.transpose();
+        l.body = in;
+      }
+      r.links.push_back(l);
+      if (b == 0) continue;
+      robots::joint j;
+      j.parent = body_name(m->body_parentid[b]);
+      j.child = l.name;
+      for (int i = 0; i < 3; ++i) j.origin.xyz(i) = m->body_pos[3 * b + i];
+      mjtNum rot[9];
+      mju_quat2Mat(rot, m->body_quat + 4 * b);
+      j.origin.rpy = rpy_of(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(rot));
+      if (m->body_jntnum[b] > 1)
+        throw error("mujoco: body " + l.name + " has " + std::to_string(m->body_jntnum[b]) + " joints");
+      if (m->body_jntnum[b] == 0) {
+        j.type = robots::joint_type::fixed;
+        j.name = l.name + "_weld";
+        fixed.push_back(j);
+        continue;
+      }
+      const int id = m->body_jntadr[b];
+      for (int i = 0; i < 3; ++i)
+        if (m->jnt_pos[3 * id + i] != 0) throw error("mujoco: joint " + std::string(mj_id2name(m, mjOBJ_JOINT, id)) +
+                                                     " is not at its body's origin");
+      j.name = mj_id2name(m, mjOBJ_JOINT, id);
+      j.type = m->jnt_type[id] == mjJNT_SLIDE ? robots::joint_type::prismatic : robots::joint_type::continuous;
+      for (int i = 0; i < 3; ++i) j.axis(i) = m->jnt_axis[3 * id + i];
+      const auto at = std::find_if(dof_.begin(), dof_.end(), [&](const auto& c) { return c.second == m->jnt_dofadr[id]; });
+      if (at == dof_.end()) throw error("mujoco: joint " + j.name + " is none of the robot's coordinates");
+      moving[std::size_t(at->first)] = j;
+    }
+    r.joints = moving;
+    r.joints.insert(r.joints.end(), fixed.begin(), fixed.end());
+    return r;
+  }
+
+  std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override {
+    set(q, Eigen::VectorXd::Zero(n_));
+    mj_forward(m_.get(), d_.get());
+    std::vector<mjtNum> dense(std::size_t(m_->nv) * std::size_t(m_->nv));
+    mj_fullM(m_.get(), dense.data(), d_->qM);
+    Eigen::MatrixXd out(n_, n_);
+    for (int i = 0; i < n_; ++i)
+      for (int j = 0; j < n_; ++j) out(i, j) = dense[std::size_t(dof_.at(i) * m_->nv + dof_.at(j))];
+    return out;
+  }
+  std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) override {
+    set(q, qdot);
+    mj_forward(m_.get(), d_.get());
+    return read(d_->qfrc_bias);
+  }
+  std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                                         const Eigen::VectorXd& qddot) override {
+    set(q, qdot);
+    for (int i = 0; i < n_; ++i) d_->qacc[dof_.at(i)] = qddot(i);
+    mj_inverse(m_.get(), d_.get());
+    return read(d_->qfrc_inverse);
+  }
+  std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                                         const Eigen::VectorXd& tau) override {
+    set(q, qdot);
+    for (int i = 0; i < n_; ++i) d_->qfrc_applied[dof_.at(i)] = tau(i);
+    mj_forward(m_.get(), d_.get());
+    return read(d_->qacc);
+  }
+
+ private:
+  void set(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) {
+    mj_resetData(m_.get(), d_.get());
+    for (int i = 0; i < n_; ++i) {
+      d_->qpos[qpos_.at(i)] = q(i);
+      d_->qvel[dof_.at(i)] = qdot(i);
+    }
+  }
+  Eigen::VectorXd read(const mjtNum* x) const {
+    Eigen::VectorXd out(n_);
+    for (int i = 0; i < n_; ++i) out(i) = x[dof_.at(i)];
+    if (d_->warning[mjWARN_BADQACC].number > 0) throw error("mujoco: a bad acceleration (mjWARN_BADQACC)");
+    return out;
+  }
+  struct model_deleter {
+    void operator()(mjModel* m) const { mj_deleteModel(m); }
+  };
+  struct data_deleter {
+    void operator()(mjData* d) const { mj_deleteData(d); }
+  };
+  std::unique_ptr<mjModel, model_deleter> m_;
+  std::unique_ptr<mjData, data_deleter> d_;
+  int n_ = 0;
+  std::map<int, int> qpos_, dof_;
+};
+}  // namespace
+
+dynamics_library dynamics() {
+  dynamics_library l;
+  l.name = "mujoco";
+  l.origin = "MuJoCo " + version() +
+             ": mj_fullM of qM, qfrc_bias and qacc after mj_forward, qfrc_inverse after mj_inverse, on a model "
+             "built as MJCF (each link a body at its joint's origin, its inertia turned into the body frame as "
+             "fullinertia, hinge and slide joints, no armature, damping, limits or geoms)";
+  l.load = [](const robots::robot& r) -> std::unique_ptr<dynamics_model> {
+    return std::make_unique<mujoco_model>(r, robot_mjcf(r));
+  };
+  return l;
+}
+
+dynamics_library urdf_dynamics() {
+  dynamics_library l;
+  l.name = "mujoco-urdf";
+  l.origin = "MuJoCo " + version() + ": the same functions on the model MuJoCo's own URDF import builds (mj_loadXML "
+             "of the robot's URDF; gravity set on mjModel::opt)";
+  l.load = [](const robots::robot& r) -> std::unique_ptr<dynamics_model> {
+    auto m = std::make_unique<mujoco_model>(r, to_urdf(r));
+    return m;
+  };
+  return l;
+}
+
+}  // namespace mechcheck::audit::mujoco
