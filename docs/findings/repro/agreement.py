@@ -84,6 +84,15 @@ def horizon(driver, multiple):
     raise KeyError(f"drivers.json: no horizon {multiple} for {driver}")
 
 
+def held_robot_mass_error(library, report="dynamics-mujoco/dynamics.json"):
+    """max |M_held - M_given| of a dynamics campaign, from eps of the scale back to units."""
+    for c in load(report):
+        if c["library"].split(" on ")[0] == library:
+            h = c["held_robot"]
+            return h["largest_difference"] * 2.0**-52 * h["scale"]
+    raise KeyError(f"{report}: no library {library}")
+
+
 def largest_axis_error(program, shape):
     return max(abs(repro(program, f"{shape}_{axis}_bullet_over_exact") - 1) for axis in "xyz")
 
@@ -91,11 +100,16 @@ def largest_axis_error(program, shape):
 # (finding, what, reproducer's value, audit's value, tolerance, relative?)
 # Orders: both fit log2 of error ratios in the asymptotic range; 0.05 is half the band a
 # decisive fit may spread. Inertias: the same library function, printed to 6 digits: 1e-5.
-# Errors and ratios of identical setups: the same arithmetic up to summation order, 1e-3
+# MuJoCo's compiled inertia: the same mass matrix, the audit's difference of two exact ones
+# (each rounded once to double) against the reproducer's double difference: 1e-6 relative of
+# a 2.5e-8 difference is 1e-14, a hundred ulps of M. Errors and ratios of identical setups: the same arithmetic up to summation order, 1e-3
 # relative (cannon-es's free top, read through the same quaternion and a reference good to
 # 1e-13 against the audit's Jacobi elliptic one: 1e-6); the stall of CASH: 5 % (the audit's runs go to 2^16 steps, the reproducer's to
 # 2^14, both on the plateau at 4.9e-11).
 CHECKS = [
+    ("mujoco-fullinertia", "MuJoCo 2.2.2: the mass matrix of the compiled one-link robot against I_zz",
+     lambda: repro("mujoco_fullinertia", "mass_matrix_error"),
+     lambda: held_robot_mass_error("mujoco"), 1e-6, True),
     ("mujoco-rk4", "RK4's order in the orientation (free symmetric top)",
      lambda: repro("mujoco_rk4_orientation", "rk4_axis_order"),
      lambda: class_fit("mujoco::RK4", "free_symmetric_top", "orientation"), 0.05, False),
