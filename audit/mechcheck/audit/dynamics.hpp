@@ -49,8 +49,8 @@ class dynamics_model {
  public:
   virtual ~dynamics_model() = default;
   /// The robot as the library holds it, where its model builder changes the robot it was
-  /// given (MuJoCo's compiler turns each inertia tensor into principal moments and a frame by
-  /// an iteration that stops short of double precision; its URDF import fuses links joined
+  /// given (MuJoCo 2.2.2's compiler turns each inertia tensor into principal moments and a
+  /// frame by an iteration that stops short of double precision; its URDF import fuses links joined
   /// by fixed joints): the quantities are then held to this robot's Lagrangian, and the
   /// distance between the two robots is reported apart (dynamics_check::model_difference).
   /// Its moving joints in the order of the robot's coordinates. None: the robot as given.

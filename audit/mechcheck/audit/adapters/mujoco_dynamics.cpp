@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -58,8 +59,12 @@ void body_xml(const robots::robot& r, const robots::tree& t, int link, int joint
 }
 
 /// Roll, pitch and yaw of a rotation, R = Rz(yaw) Ry(pitch) Rx(roll) (URDF's convention).
+/// At pitch = +-pi/2 only yaw - roll (or yaw + roll) is defined: roll 0 and yaw from the
+/// first two rows' second column.
 Eigen::Vector3d rpy_of(const Eigen::Matrix3d& r) {
-  return {std::atan2(r(2, 1), r(2, 2)), std::atan2(-r(2, 0), std::hypot(r(2, 1), r(2, 2))), std::atan2(r(1, 0), r(0, 0))};
+  const double c = std::hypot(r(2, 1), r(2, 2)), pitch = std::atan2(-r(2, 0), c);
+  if (c == 0) return {0, pitch, std::atan2(-r(0, 1), r(1, 1))};
+  return {std::atan2(r(2, 1), r(2, 2)), pitch, std::atan2(r(1, 0), r(0, 0))};
 }
 
 std::string robot_mjcf(const robots::robot& r) {
@@ -213,29 +218,36 @@ class mujoco_model final : public dynamics_model {
 };
 }  // namespace
 
-dynamics_library dynamics() {
+namespace {
+/// MuJoCo's conventions the adapter sets or accounts for, named in each library's origin.
+const char* const conventions =
+    "; qfrc_bias is Coriolis, centrifugal and gravity (M qacc + qfrc_bias = qfrc_applied, the sign of h); "
+    "inertia about the centre of mass (body_ipos); no armature, damping or friction loss set";
+
+dynamics_library library(std::string name, std::string origin, std::function<std::string(const robots::robot&)> model) {
   dynamics_library l;
-  l.name = "mujoco";
-  l.origin = "MuJoCo " + version() +
-             ": mj_fullM of qM, qfrc_bias and qacc after mj_forward, qfrc_inverse after mj_inverse, on a model "
-             "built as MJCF (each link a body at its joint's origin, its inertia turned into the body frame as "
-             "fullinertia, hinge and slide joints, no armature, damping, limits or geoms)";
-  l.load = [](const robots::robot& r) -> std::unique_ptr<dynamics_model> {
-    return std::make_unique<mujoco_model>(r, robot_mjcf(r));
+  l.name = std::move(name);
+  l.origin = "MuJoCo " + version() + ": " + std::move(origin) + conventions;
+  l.load = [model](const robots::robot& r) -> std::unique_ptr<dynamics_model> {
+    return std::make_unique<mujoco_model>(r, model(r));
   };
   return l;
 }
+}  // namespace
+
+dynamics_library dynamics() {
+  return library("mujoco",
+                 "mj_fullM of qM, qfrc_bias and qacc after mj_forward, qfrc_inverse after mj_inverse, on a model "
+                 "built as MJCF (each link a body at its joint's origin, its inertia turned into the body frame as "
+                 "fullinertia, hinge and slide joints, no limits or geoms)",
+                 robot_mjcf);
+}
 
 dynamics_library urdf_dynamics() {
-  dynamics_library l;
-  l.name = "mujoco-urdf";
-  l.origin = "MuJoCo " + version() + ": the same functions on the model MuJoCo's own URDF import builds (mj_loadXML "
-             "of the robot's URDF; gravity set on mjModel::opt)";
-  l.load = [](const robots::robot& r) -> std::unique_ptr<dynamics_model> {
-    auto m = std::make_unique<mujoco_model>(r, to_urdf(r));
-    return m;
-  };
-  return l;
+  return library("mujoco-urdf",
+                 "the same functions on the model MuJoCo's own URDF import builds (mj_loadXML of the robot's URDF, "
+                 "whose joint limits of +-1e9 are never reached; gravity set on mjModel::opt)",
+                 [](const robots::robot& r) { return to_urdf(r); });
 }
 
 }  // namespace mechcheck::audit::mujoco
