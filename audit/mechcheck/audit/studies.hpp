@@ -199,6 +199,22 @@ order_study halving_study(Run&& run, long n0, long max_steps, double eps,
   return study;
 }
 
+/// Least-squares slope of log y against log x over the indices given (nothing below two).
+inline std::optional<double> log_log_slope(const std::vector<double>& x, const std::vector<double>& y,
+                                           const std::vector<std::size_t>& use) {
+  if (use.size() < 2) return std::nullopt;
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (const std::size_t i : use) {
+    const double lx = std::log(x[i]), ly = std::log(y[i]);
+    sx += lx;
+    sy += ly;
+    sxx += lx * lx;
+    sxy += lx * ly;
+  }
+  const double n = static_cast<double>(use.size());
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
 /// Growth of an error with time: the exponent g of rms(error) ~ t^g over logarithmic
 /// windows of steps [2^w, 2^(w+1)), by least squares on log-log axes. 0 is bounded,
 /// 1/2 a random walk (rounding: Brouwer's law), 1 a linear drift.
@@ -222,22 +238,16 @@ class growth_recorder {
   /// (the first windows hold few samples). Nothing when fewer than three windows have a
   /// non-zero error.
   std::optional<double> exponent(int first = 6) const {
-    double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
-    for (int w = first; w < static_cast<int>(sum_.size()); ++w) {
+    // The window's time is the mean of its samples' steps: 1.5 2^w for a full window, less
+    // for the last one when the run ends inside it (taking 1.5 2^w there biased a linear
+    // drift's exponent to 0.977 over 2^17 steps).
+    const std::vector<double> t = window_steps(), rms = window_rms();
+    std::vector<std::size_t> use;
+    for (int w = std::max(first, 0); w < static_cast<int>(sum_.size()); ++w)
       // A window whose squares overflowed (a run on its way to diverging) has no RMS.
-      if (count_[w] == 0 || sum_[w] == 0 || !std::isfinite(sum_[w])) continue;
-      // The window's time is the mean of its samples' steps: 1.5 2^w for a full window,
-      // less for the last one when the run ends inside it (taking 1.5 2^w there biased a
-      // linear drift's exponent to 0.977 over 2^17 steps).
-      const double lt = std::log(time_[w] / count_[w]), ly = 0.5 * std::log(sum_[w] / count_[w]);
-      sx += lt;
-      sy += ly;
-      sxx += lt * lt;
-      sxy += lt * ly;
-      n += 1;
-    }
-    if (n < 3) return std::nullopt;
-    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+      if (count_[w] > 0 && sum_[w] > 0 && std::isfinite(sum_[w])) use.push_back(static_cast<std::size_t>(w));
+    if (use.size() < 3) return std::nullopt;
+    return log_log_slope(t, rms, use);
   }
   /// The mean step of each window w = 0, 1, ... (0 where none was recorded).
   std::vector<double> window_steps() const {
@@ -277,7 +287,8 @@ struct increment_growth {
 inline increment_growth growth_of_increments(const std::vector<double>& e, int first, int last) {
   increment_growth g;
   g.first = first;
-  double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
+  std::vector<double> lags;
+  std::vector<std::size_t> use;
   for (int w = first; w <= last; ++w) {
     const std::size_t lag = std::size_t{1} << w;
     if (lag >= e.size()) break;
@@ -287,16 +298,11 @@ inline increment_growth growth_of_increments(const std::vector<double>& e, int f
       sum += d * d;
     }
     const double rms = std::sqrt(sum / static_cast<double>(e.size() - lag));
+    if (rms > 0) use.push_back(g.rms.size());
     g.rms.push_back(rms);
-    if (rms == 0) continue;
-    const double lx = std::log(static_cast<double>(lag)), ly = std::log(rms);
-    sx += lx;
-    sy += ly;
-    sxx += lx * lx;
-    sxy += lx * ly;
-    n += 1;
+    lags.push_back(static_cast<double>(lag));
   }
-  if (n >= 2) g.exponent = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  g.exponent = log_log_slope(lags, g.rms, use).value_or(0.0);
   return g;
 }
 
@@ -325,22 +331,6 @@ struct growth_class {
   std::optional<double> exponent;  ///< the slope that decided, where one did
   std::string kind;                ///< growth_kind's words, or "not resolvable: ..."
 };
-
-/// Least-squares slope of log y against log x over the indices given (nothing below two).
-inline std::optional<double> log_log_slope(const std::vector<double>& x, const std::vector<double>& y,
-                                           const std::vector<std::size_t>& use) {
-  if (use.size() < 2) return std::nullopt;
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (const std::size_t i : use) {
-    const double lx = std::log(x[i]), ly = std::log(y[i]);
-    sx += lx;
-    sy += ly;
-    sxx += lx * lx;
-    sxy += lx * ly;
-  }
-  const double n = static_cast<double>(use.size());
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
 
 inline growth_class classify_growth(const std::vector<double>& time, const std::vector<double>& rms,
                                     const std::vector<double>& floor, double time_scale, double t_end) {
@@ -379,8 +369,8 @@ inline growth_class classify_growth(const std::vector<double>& time, const std::
     return g;
   }
   if (fitted.size() < 3) {
-    g.kind = "not resolvable: " + std::to_string(fitted.size()) + " windows past t = " + text(time_scale) +
-             " above the rounding floor";
+    g.kind = "not resolvable: " + std::to_string(fitted.size()) + (fitted.size() == 1 ? " window" : " windows") +
+             " past t = " + text(time_scale) + " above the rounding floor";
     return g;
   }
   g.exponent = log_log_slope(time, rms, fitted);
