@@ -347,17 +347,26 @@ TEST(ReferenceCache, StoresLoadsAndRefusesAnotherKeyOrABrokenFile) {
   // The file of "key one" holding another key (an edited key, or a collision of the hash):
   // a miss, and the note says why; the whole reference is there, only the key differs.
   const auto file = dir / (audit::fnv1a_hex("key one") + ".json");
-  {
+  const auto edit = [&file](const std::string& from, const std::string& to) {  // the file's first `from`
     std::ifstream in(file);
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const auto at = text.find("\"key one\"");
-    ASSERT_NE(at, std::string::npos);
-    text.replace(at, 9, "\"key 0ne\"");
+    const auto at = text.find(from);
+    if (at == std::string::npos) return false;
+    text.replace(at, from.size(), to);
     std::ofstream(file, std::ios::trunc) << text;
-  }
+    return true;
+  };
+  ASSERT_TRUE(edit("\"key one\"", "\"key 0ne\""));
   EXPECT_FALSE(cache.load("key one"));
   EXPECT_NE(cache.note().find("holds another key than the one asked for"), std::string::npos) << cache.note();
   EXPECT_TRUE(cache.load("key 0ne") == std::nullopt);  // its own hash names another file
+  // A field this version does not write (another version's file, an edit): a miss, named.
+  cache.store("key one", c);
+  ASSERT_TRUE(cache.load("key one"));
+  ASSERT_TRUE(edit("\"digits\"", "\"digitz\""));
+  EXPECT_FALSE(cache.load("key one"));
+  EXPECT_NE(cache.note().find("holds the field \"digitz\", not one this version writes"), std::string::npos)
+      << cache.note();
   // A file edited or cut short is a miss, never a wrong reference.
   for (const auto& f : std::filesystem::directory_iterator(dir)) {
     std::ofstream(f.path(), std::ios::trunc) << "{\"key\": \"key one\", \"x\": ";

@@ -2,11 +2,14 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -76,6 +79,17 @@ std::optional<certified_state> reference_cache::load(const std::string& key) con
   if (!in) return std::nullopt;
   try {
     const json doc = json::parse(in);
+    // Every field this version writes, and no other: a file with a field it does not know
+    // (written by another version, or edited) is not read as if the field were absent.
+    static constexpr std::array<std::string_view, 8> known{"key",     "solver", "digits", "steps", "seconds",
+                                                           "history", "q",      "p"};
+    for (const auto& field : doc.items())
+      if (std::find(known.begin(), known.end(), field.key()) == known.end()) {
+        note_ = path.string() + " holds the field \"" + field.key() +
+                "\", not one this version writes (key, solver, digits, steps, seconds, history, q, p): the "
+                "reference is computed";
+        return std::nullopt;
+      }
     if (doc.at("key").get<std::string>() != key) {  // an edited file or a hash collision
       note_ = path.string() + " holds another key than the one asked for (an edited file or a hash collision): "
               "the reference is computed";
