@@ -70,6 +70,32 @@ struct dynamics_library {
   std::function<std::unique_ptr<dynamics_model>(const robots::robot&)> load;
 };
 
+/// A library's order of the robot's coordinates, for its adapter: order[i] is the robot's
+/// coordinate at the library's index i.
+struct coordinate_order {
+  std::vector<int> order;
+  /// x in the library's order: out(i) = x(order[i]).
+  Eigen::VectorXd to_library(const Eigen::VectorXd& x) const {
+    Eigen::VectorXd out(static_cast<Eigen::Index>(order.size()));
+    for (std::size_t i = 0; i < order.size(); ++i) out(Eigen::Index(i)) = x(order[i]);
+    return out;
+  }
+  /// y in the robot's order: out(order[i]) = y(i).
+  Eigen::VectorXd from_library(const Eigen::VectorXd& y) const {
+    Eigen::VectorXd out(static_cast<Eigen::Index>(order.size()));
+    for (std::size_t i = 0; i < order.size(); ++i) out(order[i]) = y(Eigen::Index(i));
+    return out;
+  }
+  /// A matrix's rows and columns in the robot's order.
+  Eigen::MatrixXd from_library(const Eigen::MatrixXd& m) const {
+    const auto n = static_cast<Eigen::Index>(order.size());
+    Eigen::MatrixXd out(n, n);
+    for (std::size_t i = 0; i < order.size(); ++i)
+      for (std::size_t j = 0; j < order.size(); ++j) out(order[i], order[j]) = m(Eigen::Index(i), Eigen::Index(j));
+    return out;
+  }
+};
+
 /// A robot's state for every quantity.
 struct dynamics_state {
   Eigen::VectorXd q, qdot, qddot, tau;

@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "mechcheck/audit/dynamics.hpp"
 #include "mechcheck/audit/engines.hpp"
 
 namespace mechcheck::audit::bullet {
@@ -37,5 +38,13 @@ std::vector<engine_integrator> integrators();
 
 /// How bullet computes the inertia of its shapes (engines.hpp, shapes()).
 engine_shapes shapes();
+
+/// btMultiBody's forward dynamics (bullet_dynamics.cpp): a robot becomes a btMultiBody
+/// with a fixed base (the root link) whose links' frames are moved onto their principal axes
+/// at their centres of mass (btMultiBody takes principal moments); the joint accelerations
+/// of its articulated-body algorithm at dt = 0, gravity applied as its dynamics world applies
+/// it, damping off. Mass matrix, bias and inverse dynamics: not offered (the core library
+/// has none).
+dynamics_library dynamics();
 
 }  // namespace mechcheck::audit::bullet

@@ -18,10 +18,18 @@
 /// World.hpp), named dart::World; DART states no order. Its shapes' inertia:
 /// BoxShape, SphereShape, CylinderShape, CapsuleShape, ConeShape, EllipsoidShape
 /// ::computeInertia.
+///
+/// Its equations of motion (dart_dynamics.cpp) as a dynamics_library: a robot becomes a
+/// Skeleton -- a BodyNode per link (Inertia about the centre of mass in the link's frame),
+/// a RevoluteJoint or PrismaticJoint whose parent-to-joint transform is the joint's origin
+/// and whose axis is in the child's frame, WeldJoints for fixed joints and the root -- and
+/// M, h, inverse and forward dynamics come from Skeleton's getMassMatrix,
+/// getCoriolisAndGravityForces, computeInverseDynamics and computeForwardDynamics.
 
 #include <string>
 #include <vector>
 
+#include "mechcheck/audit/dynamics.hpp"
 #include "mechcheck/audit/engines.hpp"
 
 namespace mechcheck::audit::dart_engine {
@@ -34,5 +42,8 @@ std::vector<engine_integrator> integrators();
 
 /// How DART computes the inertia of its shapes (engines.hpp, shapes()).
 engine_shapes shapes();
+
+/// Skeleton's equations of motion, on a Skeleton built from the description.
+dynamics_library dynamics();
 
 }  // namespace mechcheck::audit::dart_engine

@@ -102,6 +102,15 @@ inline std::vector<dynamics_library> dynamics_found() {
   all.push_back(mujoco::dynamics());
   all.push_back(mujoco::urdf_dynamics());
 #endif
+#ifdef MECHCHECK_HAVE_DART
+  all.push_back(dart_engine::dynamics());
+#endif
+#ifdef MECHCHECK_HAVE_SIMBODY
+  all.push_back(simbody::dynamics());
+#endif
+#ifdef MECHCHECK_HAVE_BULLET
+  all.push_back(bullet::dynamics());
+#endif
   return all;
 }
 

@@ -69,14 +69,14 @@ class kdl_model final : public dynamics_model {
         throw robot_refused("kdl: Tree::getChain refused the chain to " + leaf);
       for (unsigned s = 0; s < chain_data_.getNrOfSegments(); ++s) {
         const KDL::Joint& j = chain_data_.getSegment(s).getJoint();
-        if (j.getType() != KDL::Joint::None) chain_order_.push_back(coordinate_.at(j.getName()));
+        if (j.getType() != KDL::Joint::None) chain_order_.order.push_back(coordinate_.at(j.getName()));
       }
     }
     // The tree's joint numbering (TreeElement::q_nr).
-    tree_order_.assign(std::size_t(n_), -1);
+    tree_order_.order.assign(std::size_t(n_), -1);
     for (const auto& [name, element] : tree_.getSegments()) {
       const KDL::Joint& j = GetTreeElementSegment(element).getJoint();
-      if (j.getType() != KDL::Joint::None) tree_order_[GetTreeElementQNr(element)] = coordinate_.at(j.getName());
+      if (j.getType() != KDL::Joint::None) tree_order_.order[GetTreeElementQNr(element)] = coordinate_.at(j.getName());
     }
     gravity_ = vec(r.gravity);
   }
@@ -86,10 +86,7 @@ class kdl_model final : public dynamics_model {
     KDL::ChainDynParam dyn(chain_data_, gravity_);
     KDL::JntSpaceInertiaMatrix h(n_);
     check(dyn.JntToMass(in_chain(q), h), "ChainDynParam::JntToMass");
-    Eigen::MatrixXd out(n_, n_);
-    for (int i = 0; i < n_; ++i)
-      for (int j = 0; j < n_; ++j) out(chain_order_[std::size_t(i)], chain_order_[std::size_t(j)]) = h(i, j);
-    return out;
+    return chain_order_.from_library(Eigen::MatrixXd(h.data));
   }
   std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) override {
     if (!chain_) return std::nullopt;
@@ -112,9 +109,7 @@ class kdl_model final : public dynamics_model {
     }
     KDL::TreeIdSolver_RNE id(tree_, gravity_);
     check(id.CartToJnt(in_tree(q), in_tree(qdot), in_tree(qddot), KDL::WrenchMap(), tau), "TreeIdSolver_RNE::CartToJnt");
-    Eigen::VectorXd out(n_);
-    for (int i = 0; i < n_; ++i) out(tree_order_[std::size_t(i)]) = tau(i);
-    return out;
+    return tree_order_.from_library(Eigen::VectorXd(tau.data));
   }
   std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                                          const Eigen::VectorXd& tau) override {
@@ -127,21 +122,14 @@ class kdl_model final : public dynamics_model {
   }
 
  private:
-  KDL::JntArray in_chain(const Eigen::VectorXd& x) const {
-    KDL::JntArray out(n_);
-    for (int i = 0; i < n_; ++i) out(i) = x(chain_order_[std::size_t(i)]);
+  static KDL::JntArray joints(const Eigen::VectorXd& x) {
+    KDL::JntArray out(static_cast<unsigned>(x.size()));
+    out.data = x;
     return out;
   }
-  KDL::JntArray in_tree(const Eigen::VectorXd& x) const {
-    KDL::JntArray out(n_);
-    for (int i = 0; i < n_; ++i) out(i) = x(tree_order_[std::size_t(i)]);
-    return out;
-  }
-  Eigen::VectorXd from_chain(const KDL::JntArray& x) const {
-    Eigen::VectorXd out(n_);
-    for (int i = 0; i < n_; ++i) out(chain_order_[std::size_t(i)]) = x(i);
-    return out;
-  }
+  KDL::JntArray in_chain(const Eigen::VectorXd& x) const { return joints(chain_order_.to_library(x)); }
+  KDL::JntArray in_tree(const Eigen::VectorXd& x) const { return joints(tree_order_.to_library(x)); }
+  Eigen::VectorXd from_chain(const KDL::JntArray& x) const { return chain_order_.from_library(Eigen::VectorXd(x.data)); }
 
   robots::robot robot_;
   KDL::Tree tree_;
@@ -149,7 +137,7 @@ class kdl_model final : public dynamics_model {
   bool chain_ = false;
   int n_ = 0;
   std::map<std::string, int> coordinate_;
-  std::vector<int> chain_order_, tree_order_;
+  coordinate_order chain_order_, tree_order_;  ///< KDL's joint numbering on the chain, on the tree
   KDL::Vector gravity_;
 };
 }  // namespace

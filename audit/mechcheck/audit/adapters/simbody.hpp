@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "mechcheck/audit/dynamics.hpp"
 #include "mechcheck/audit/engines.hpp"
 
 namespace mechcheck::audit::simbody {
@@ -36,5 +37,12 @@ std::vector<engine_integrator> integrators();
 
 /// How simbody computes the inertia of its shapes (engines.hpp, shapes()).
 engine_shapes shapes();
+
+/// Its equations of motion (simbody_dynamics.cpp): a robot becomes a MultibodySystem of a
+/// Body::Rigid per link on Pin, Slider and Weld mobilizers whose frames turn the mobilizer's
+/// axis onto the joint's; M by calcM, h and inverse dynamics by
+/// calcResidualForceIgnoringConstraints and forward dynamics by
+/// calcAccelerationIgnoringConstraints, with Force::Gravity's body forces applied.
+dynamics_library dynamics();
 
 }  // namespace mechcheck::audit::simbody

@@ -81,4 +81,38 @@ class model {
   std::unique_ptr<impl> p_;
 };
 
+/// A robot for its equations of motion (dynamics.hpp), in the bridge's standard types:
+/// bodies parents first, each on a mobilizer from its parent (Ground for the first).
+struct robot_setup {
+  struct body {
+    int parent = -1;  ///< index into bodies; -1: Ground
+    int joint = 2;    ///< 0 a Pin (revolute), 1 a Slider (prismatic), 2 a Weld (fixed)
+    double rotation[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  ///< the joint's origin in the parent, row-major
+    double position[3] = {0, 0, 0};
+    double axis[3] = {0, 0, 1};                        ///< unit, in the body's frame
+    double mass = 0;
+    double com[3] = {0, 0, 0};                         ///< centre of mass in the body's frame
+    double inertia[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};   ///< about the centre of mass, row-major
+  };
+  double gravity[3] = {0, 0, 0};
+  std::vector<body> bodies;
+};
+
+/// Simbody's equations of motion of a robot_setup: q, u, udot, tau and the rows and columns
+/// of M in the order of the moving bodies in `bodies` (u = qdot for a Pin and a Slider).
+class robot_dynamics {
+ public:
+  explicit robot_dynamics(const robot_setup& r);  ///< throws std::exception (Simbody's)
+  ~robot_dynamics();
+  int size() const;
+  void mass_matrix(const double* q, double* m) const;  ///< row-major
+  void bias(const double* q, const double* u, double* h) const;
+  void inverse(const double* q, const double* u, const double* udot, double* tau) const;
+  void forward(const double* q, const double* u, const double* tau, double* udot) const;
+
+ private:
+  struct impl;
+  std::unique_ptr<impl> p_;
+};
+
 }  // namespace mechcheck::audit::simbody_bridge

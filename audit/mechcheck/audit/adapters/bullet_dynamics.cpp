@@ -1,0 +1,163 @@
+// Bullet's btMultiBody forward dynamics as a dynamics_library (adapters/bullet.hpp).
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLink.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+
+#include "mechcheck/audit/adapters/bullet.hpp"
+#include "mechcheck/robots/dynamics.hpp"
+
+namespace mechcheck::audit::bullet {
+
+namespace {
+btVector3 bt(const Eigen::Vector3d& v) { return btVector3(v(0), v(1), v(2)); }
+
+btQuaternion quaternion(const Eigen::Matrix3d& r) {
+  const btMatrix3x3 m(r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0), r(2, 1), r(2, 2));
+  btQuaternion q;
+  m.getRotation(q);
+  return q;
+}
+
+/// A link as btMultiBody takes it: its frame at the centre of mass on the principal axes of
+/// its inertia (Bullet's inertia is three principal moments), found from the description's
+/// tensor turned into the link's frame, R_o I R_o^T = P diag(moments) P^T with det P = +1
+/// (notes eq 142: the tensor in the principal frame is P^T I P). A massless link: its own
+/// frame, mass and moments 0.
+struct principal {
+  double mass = 0;
+  Eigen::Vector3d com = Eigen::Vector3d::Zero();    ///< in the link's frame
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();  ///< P: the principal axes in the link's frame
+  Eigen::Vector3d moments = Eigen::Vector3d::Zero();
+};
+
+principal principal_of(const robots::link& l) {
+  principal p;
+  if (!l.body) return p;
+  const Eigen::Matrix3d ro = robots::rpy_rotation<double>(l.body->origin.rpy);
+  const Eigen::Matrix3d i = ro * l.body->inertia * ro.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(Eigen::Matrix3d((i + i.transpose()) / 2));
+  p.mass = l.body->mass;
+  p.com = l.body->origin.xyz;
+  p.axes = eigen.eigenvectors();
+  if (p.axes.determinant() < 0) p.axes.col(2) = -p.axes.col(2);
+  p.moments = eigen.eigenvalues();
+  return p;
+}
+
+class model final : public dynamics_model {
+ public:
+  explicit model(const robots::robot& r) {
+    const robots::tree t = robots::validate(r);
+    n_ = t.dofs;
+    std::vector<principal> frame(r.links.size());
+    for (std::size_t k = 0; k < r.links.size(); ++k) frame[k] = principal_of(r.links[k]);
+    const principal& base = frame[std::size_t(t.root)];
+    body_ = std::make_unique<btMultiBody>(static_cast<int>(t.order.size()), base.mass, bt(base.moments), true, false);
+    // The base is the root link, fixed at the world's origin: its Bullet frame at its centre
+    // of mass, turned onto its principal axes (world to base: P^T).
+    body_->setBasePos(bt(base.com));
+    body_->setWorldToBaseRot(quaternion(base.axes.transpose()));
+    std::vector<int> index(r.links.size(), -1);  // per link, its btMultiBody link (-1: the base)
+    coordinate_.assign(std::size_t(n_), -1);
+    for (std::size_t i = 0; i < t.order.size(); ++i) {
+      const int k = t.order[i];
+      const robots::joint& j = r.joints[std::size_t(k)];
+      const int parent_link = t.parent_link[std::size_t(k)], child_link = t.child_link[std::size_t(k)];
+      const principal& parent = frame[std::size_t(parent_link)];
+      const principal& child = frame[std::size_t(child_link)];
+      const Eigen::Matrix3d origin = robots::rpy_rotation<double>(j.origin.rpy);
+      // Points in the parent's Bullet frame to this one's: P_child^T R_origin^T P_parent.
+      const btQuaternion parent_to_this = quaternion(child.axes.transpose() * origin.transpose() * parent.axes);
+      // From the parent's centre of mass to the joint (the child's origin), in the parent's
+      // Bullet frame; from the joint to this centre of mass, in this one's.
+      const btVector3 to_pivot = bt(parent.axes.transpose() * (j.origin.xyz - parent.com));
+      const btVector3 to_com = bt(child.axes.transpose() * child.com);
+      const int link = static_cast<int>(i), parent_index = index[std::size_t(parent_link)];
+      switch (j.type) {
+        case robots::joint_type::revolute:
+        case robots::joint_type::continuous:
+          body_->setupRevolute(link, child.mass, bt(child.moments), parent_index, parent_to_this,
+                               bt(child.axes.transpose() * j.axis), to_pivot, to_com, true);
+          break;
+        case robots::joint_type::prismatic:
+          body_->setupPrismatic(link, child.mass, bt(child.moments), parent_index, parent_to_this,
+                                bt(child.axes.transpose() * j.axis), to_pivot, to_com, true);
+          break;
+        case robots::joint_type::fixed:
+          body_->setupFixed(link, child.mass, bt(child.moments), parent_index, parent_to_this, to_pivot, to_com);
+          break;
+      }
+      index[std::size_t(child_link)] = link;
+      if (const int c = t.coordinate[std::size_t(k)]; c >= 0) coordinate_[std::size_t(c)] = link;
+      mass_.push_back(child.mass);
+    }
+    body_->finalizeMultiDof();
+    // btMultiBody's defaults damp every body (linear and angular damping 0.04, btMultiBody.cpp):
+    // off, so that the equations are the Lagrangian's. The gyroscopic term stays on (default).
+    body_->setLinearDamping(0);
+    body_->setAngularDamping(0);
+    gravity_ = bt(r.gravity);
+  }
+
+  std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd&) override { return std::nullopt; }
+  std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd&, const Eigen::VectorXd&) override { return std::nullopt; }
+  std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd&, const Eigen::VectorXd&,
+                                         const Eigen::VectorXd&) override {
+    return std::nullopt;
+  }
+  /// The articulated-body algorithm at dt = 0 (no velocity update), the applied forces
+  /// gravity on every link's centre of mass as btMultiBodyDynamicsWorld::applyGravity adds
+  /// them, and tau as joint torques; the joint accelerations are the algorithm's output,
+  /// scratch_r[dofs + 6 + the link's dof offset].
+  std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                                         const Eigen::VectorXd& tau) override {
+    for (int c = 0; c < n_; ++c) {
+      body_->setJointPos(coordinate_[std::size_t(c)], q(c));
+      body_->setJointVel(coordinate_[std::size_t(c)], qdot(c));
+    }
+    body_->clearForcesAndTorques();
+    for (int l = 0; l < body_->getNumLinks(); ++l) body_->addLinkForce(l, gravity_ * mass_[std::size_t(l)]);
+    for (int c = 0; c < n_; ++c) body_->addJointTorque(coordinate_[std::size_t(c)], tau(c));
+    btAlignedObjectArray<btScalar> scratch_r;
+    btAlignedObjectArray<btVector3> scratch_v;
+    btAlignedObjectArray<btMatrix3x3> scratch_m;
+    body_->computeAccelerationsArticulatedBodyAlgorithmMultiDof(0, scratch_r, scratch_v, scratch_m, false, false, false);
+    Eigen::VectorXd out(n_);
+    for (int c = 0; c < n_; ++c)
+      out(c) = scratch_r[body_->getNumDofs() + 6 + body_->getLink(coordinate_[std::size_t(c)]).m_dofOffset];
+    return out;
+  }
+
+ private:
+  std::unique_ptr<btMultiBody> body_;
+  std::vector<int> coordinate_;  ///< per coordinate, its btMultiBody link
+  std::vector<double> mass_;     ///< per btMultiBody link
+  btVector3 gravity_;
+  int n_ = 0;
+};
+}  // namespace
+
+dynamics_library dynamics() {
+  dynamics_library l;
+  l.name = "bullet";
+  l.origin =
+      "Bullet " + version() +
+      " (libbullet-dev, double): btMultiBody::computeAccelerationsArticulatedBodyAlgorithmMultiDof at dt = 0 "
+      "(forward dynamics), gravity added as btMultiBodyDynamicsWorld::applyGravity adds it (addLinkForce, m g), "
+      "tau by addJointTorque; linear and angular damping set to 0 (btMultiBody's defaults are 0.04), the "
+      "gyroscopic term on (its default). A btMultiBody link's frame is at its centre of mass on its principal "
+      "axes (it takes three principal moments): the adapter diagonalizes each link's tensor (Eigen's "
+      "SelfAdjointEigenSolver, one rounding of its own) and gives the joint's axis, the parent-to-link "
+      "rotation and the pivot offsets in those frames; the root link is the fixed base. Its mass matrix, bias "
+      "and inverse dynamics are not offered: the core library has none, and Debian's libbullet-extras-dev "
+      "ships the BulletInverseDynamics libraries without their .hpp headers";
+  l.load = [](const robots::robot& r) -> std::unique_ptr<dynamics_model> { return std::make_unique<model>(r); };
+  return l;
+}
+
+}  // namespace mechcheck::audit::bullet

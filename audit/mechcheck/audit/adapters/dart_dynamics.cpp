@@ -1,0 +1,152 @@
+// DART's equations of motion as a dynamics_library (adapters/dart_engine.hpp).
+#include <dart/dynamics/BodyNode.hpp>
+#include <dart/dynamics/DegreeOfFreedom.hpp>
+#include <dart/dynamics/PrismaticJoint.hpp>
+#include <dart/dynamics/RevoluteJoint.hpp>
+#include <dart/dynamics/Skeleton.hpp>
+#include <dart/dynamics/WeldJoint.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mechcheck/audit/adapters/dart_engine.hpp"
+#include "mechcheck/robots/dynamics.hpp"
+
+namespace mechcheck::audit::dart_engine {
+
+namespace {
+using namespace dart::dynamics;
+
+Eigen::Isometry3d isometry(const robots::pose& p) {
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.linear() = robots::rpy_rotation<double>(p.rpy);
+  t.translation() = p.xyz;
+  return t;
+}
+
+/// The link's inertia in its body frame: the tensor turned by its inertial origin's rotation
+/// (R_o I R_o^T), about the centre of mass at the origin's translation; a massless link
+/// (no <inertial>) gets mass 0, where DART's default BodyNode has mass 1.
+Inertia inertia_of(const robots::link& l) {
+  if (!l.body) return Inertia(0, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero());
+  const Eigen::Matrix3d ro = robots::rpy_rotation<double>(l.body->origin.rpy);
+  return Inertia(l.body->mass, l.body->origin.xyz, ro * l.body->inertia * ro.transpose());
+}
+
+template <class J>
+typename J::Properties joint_properties(const std::string& name, const Eigen::Isometry3d& origin) {
+  typename J::Properties p;
+  p.mName = name;
+  p.mT_ParentBodyToJoint = origin;  // the child's frame is the joint's (T_ChildBodyToJoint = I)
+  return p;
+}
+
+class dart_model final : public dynamics_model {
+ public:
+  explicit dart_model(const robots::robot& r) : skeleton_(Skeleton::create(r.name)) {
+    const robots::tree t = robots::validate(r);
+    n_ = t.dofs;
+    skeleton_->setGravity(r.gravity);
+    std::vector<BodyNode*> body(r.links.size(), nullptr);
+    const robots::link& root = r.links[std::size_t(t.root)];
+    BodyNode::Properties root_body;
+    root_body.mName = root.name;
+    body[std::size_t(t.root)] = skeleton_
+                                    ->createJointAndBodyNodePair<WeldJoint>(
+                                        nullptr, joint_properties<WeldJoint>(root.name + "_world", Eigen::Isometry3d::Identity()),
+                                        root_body)
+                                    .second;
+    // The root is welded to the world: its inertia never enters the equations. A massless
+    // root keeps DART's default (mass 1), which DART does not warn about as it does about 0.
+    if (root.body) body[std::size_t(t.root)]->setInertia(inertia_of(root));
+    order_.order.assign(std::size_t(n_), -1);
+    for (const int k : t.order) {
+      const robots::joint& j = r.joints[std::size_t(k)];
+      BodyNode* parent = body[std::size_t(t.parent_link[std::size_t(k)])];
+      const robots::link& child = r.links[std::size_t(t.child_link[std::size_t(k)])];
+      BodyNode::Properties child_body;
+      child_body.mName = child.name;
+      const Eigen::Isometry3d origin = isometry(j.origin);
+      std::pair<Joint*, BodyNode*> made;
+      switch (j.type) {
+        case robots::joint_type::revolute:
+        case robots::joint_type::continuous: {
+          auto p = joint_properties<RevoluteJoint>(j.name, origin);
+          p.mAxis = j.axis;
+          made = skeleton_->createJointAndBodyNodePair<RevoluteJoint>(parent, p, child_body);
+          break;
+        }
+        case robots::joint_type::prismatic: {
+          auto p = joint_properties<PrismaticJoint>(j.name, origin);
+          p.mAxis = j.axis;
+          made = skeleton_->createJointAndBodyNodePair<PrismaticJoint>(parent, p, child_body);
+          break;
+        }
+        case robots::joint_type::fixed:
+          made = skeleton_->createJointAndBodyNodePair<WeldJoint>(parent, joint_properties<WeldJoint>(j.name, origin),
+                                                                  child_body);
+          break;
+      }
+      made.second->setInertia(inertia_of(child));
+      body[std::size_t(t.child_link[std::size_t(k)])] = made.second;
+      if (const int c = t.coordinate[std::size_t(k)]; c >= 0)
+        order_.order[made.first->getDof(0)->getIndexInSkeleton()] = c;
+    }
+    if (static_cast<int>(skeleton_->getNumDofs()) != n_)
+      throw error("dart: the Skeleton has " + std::to_string(skeleton_->getNumDofs()) + " degrees of freedom, the robot " +
+                  std::to_string(n_));
+  }
+
+  std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override {
+    skeleton_->setPositions(order_.to_library(q));
+    return order_.from_library(skeleton_->getMassMatrix());
+  }
+  std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) override {
+    skeleton_->setPositions(in_dart(q));
+    skeleton_->setVelocities(in_dart(qdot));
+    return from_dart(skeleton_->getCoriolisAndGravityForces());
+  }
+  std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                                         const Eigen::VectorXd& qddot) override {
+    skeleton_->setPositions(in_dart(q));
+    skeleton_->setVelocities(in_dart(qdot));
+    skeleton_->setAccelerations(in_dart(qddot));
+    skeleton_->computeInverseDynamics(false, false, false);
+    return from_dart(skeleton_->getForces());
+  }
+  std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                                         const Eigen::VectorXd& tau) override {
+    skeleton_->setPositions(in_dart(q));
+    skeleton_->setVelocities(in_dart(qdot));
+    skeleton_->setForces(in_dart(tau));
+    skeleton_->computeForwardDynamics();
+    return from_dart(skeleton_->getAccelerations());
+  }
+
+ private:
+  Eigen::VectorXd in_dart(const Eigen::VectorXd& x) const { return order_.to_library(x); }
+  Eigen::VectorXd from_dart(const Eigen::VectorXd& x) const { return order_.from_library(x); }
+
+  SkeletonPtr skeleton_;
+  int n_ = 0;
+  coordinate_order order_;  ///< the Skeleton's degrees of freedom
+};
+}  // namespace
+
+dynamics_library dynamics() {
+  dynamics_library l;
+  l.name = "dart";
+  l.origin = "DART " + version() +
+             " (libdart6.12): Skeleton::getMassMatrix, getCoriolisAndGravityForces (C + N of DART's M qddot + C + "
+             "N = tau, Skeleton.hpp), computeInverseDynamics without external, damping or spring forces, "
+             "computeForwardDynamics; the Skeleton built from the description: a BodyNode per link with "
+             "Inertia(mass, centre of mass, R_o I R_o^T) in its frame (mass 0 for a link without one), a "
+             "RevoluteJoint or PrismaticJoint with T_ParentBodyToJoint the joint's origin and the axis in the "
+             "child's frame, a WeldJoint for a fixed joint and for the root to the world; no joint damping, "
+             "spring, Coulomb friction or enforced limit (DART 6.12 has no rotor inertia)";
+  l.load = [](const robots::robot& r) -> std::unique_ptr<dynamics_model> { return std::make_unique<dart_model>(r); };
+  return l;
+}
+
+}  // namespace mechcheck::audit::dart_engine

@@ -1,0 +1,120 @@
+// Compiled as C++17 (see simbody_bridge.hpp): Simbody's equations of motion of a robot.
+#include <Simbody.h>
+
+#include <memory>
+#include <vector>
+
+#include "mechcheck/audit/adapters/detail/simbody_bridge.hpp"
+
+namespace mechcheck::audit::simbody_bridge {
+
+namespace {
+using namespace SimTK;
+
+Mat33 mat33(const double* m) { return Mat33(m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8]); }
+Vec3 vec3(const double* v) { return Vec3(v[0], v[1], v[2]); }
+
+/// The body's mass properties as MassProperties wants them: the inertia about the body's
+/// origin, shifted from the centre of mass (Inertia::shiftFromMassCenter), symmetrized first
+/// (the tensor turned into the body frame carries asymmetry at rounding).
+MassProperties mass_properties(const robot_setup::body& b) {
+  const Mat33 i = mat33(b.inertia);
+  const Mat33 symmetric = (i + ~i) / 2;
+  const Inertia central(symmetric);
+  return MassProperties(b.mass, vec3(b.com), central.shiftFromMassCenter(-vec3(b.com), b.mass));
+}
+}  // namespace
+
+struct robot_dynamics::impl {
+  MultibodySystem system;
+  SimbodyMatterSubsystem matter{system};
+  GeneralForceSubsystem forces{system};
+  Force::Gravity gravity;
+  std::vector<MobilizedBody> moving;  ///< in order
+  std::vector<UIndex> u;              ///< per moving body
+  mutable State state;
+
+  explicit impl(const robot_setup& r) : gravity(forces, matter, vec3(r.gravity)) {
+    std::vector<MobilizedBody> mobods;
+    for (const auto& b : r.bodies) {
+      MobilizedBody& parent = b.parent < 0 ? matter.updGround() : mobods[std::size_t(b.parent)];
+      const Transform origin(Rotation(mat33(b.rotation)), vec3(b.position));
+      const Body::Rigid info(mass_properties(b));
+      if (b.joint == 0 || b.joint == 1) {
+        // The mobilizer's frames F (on the parent, at the joint's origin) and M (on the
+        // body, at its origin) turned so that their z axis (Pin) or x axis (Slider) is the
+        // joint's axis: X_PB = origin * R_a * motion(q) * R_a^T.
+        const Rotation ra(UnitVec3(vec3(b.axis)), b.joint == 0 ? CoordinateAxis(ZAxis) : CoordinateAxis(XAxis));
+        if (b.joint == 0)
+          mobods.push_back(MobilizedBody::Pin(parent, origin * Transform(ra), info, Transform(ra)));
+        else
+          mobods.push_back(MobilizedBody::Slider(parent, origin * Transform(ra), info, Transform(ra)));
+        moving.push_back(mobods.back());
+      } else {
+        mobods.push_back(MobilizedBody::Weld(parent, origin, info, Transform()));
+      }
+    }
+    state = system.realizeTopology();
+    for (const MobilizedBody& m : moving) u.push_back(m.getFirstUIndex(state));
+  }
+  void set(const double* qs, const double* us, Stage stage) const {
+    for (std::size_t k = 0; k < moving.size(); ++k) {
+      moving[k].setOneQ(state, 0, qs[k]);
+      moving[k].setOneU(state, 0, us ? us[k] : 0.0);
+    }
+    system.realize(state, stage);
+  }
+  Vector mobility(const double* x) const {
+    Vector out(state.getNU(), 0.0);
+    for (std::size_t k = 0; k < u.size(); ++k) out[u[k]] = x[k];
+    return out;
+  }
+  void out(const Vector& v, double* x) const {
+    for (std::size_t k = 0; k < u.size(); ++k) x[k] = v[u[k]];
+  }
+};
+
+robot_dynamics::robot_dynamics(const robot_setup& r) : p_(std::make_unique<impl>(r)) {}
+robot_dynamics::~robot_dynamics() = default;
+
+int robot_dynamics::size() const { return static_cast<int>(p_->u.size()); }
+
+void robot_dynamics::mass_matrix(const double* q, double* m) const {
+  p_->set(q, nullptr, Stage::Position);
+  Matrix full;
+  p_->matter.calcM(p_->state, full);
+  const std::size_t n = p_->u.size();
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) m[i * n + j] = full(p_->u[i], p_->u[j]);
+}
+
+// f_residual = M udot + f_inertial - f_applied (SimbodyMatterSubsystem.h), the applied
+// forces Force::Gravity's body forces: at udot = 0 the bias h, at udot the inverse dynamics.
+void robot_dynamics::bias(const double* q, const double* u, double* h) const {
+  p_->set(q, u, Stage::Velocity);
+  Vector residual;
+  p_->matter.calcResidualForceIgnoringConstraints(p_->state, Vector(), p_->gravity.getBodyForces(p_->state), Vector(),
+                                                  residual);
+  p_->out(residual, h);
+}
+
+void robot_dynamics::inverse(const double* q, const double* u, const double* udot, double* tau) const {
+  p_->set(q, u, Stage::Velocity);
+  Vector residual;
+  p_->matter.calcResidualForceIgnoringConstraints(p_->state, Vector(), p_->gravity.getBodyForces(p_->state),
+                                                  p_->mobility(udot), residual);
+  p_->out(residual, tau);
+}
+
+// M udot + f_inertial = f_applied (calcAccelerationIgnoringConstraints), f_applied = tau and
+// gravity's body forces.
+void robot_dynamics::forward(const double* q, const double* u, const double* tau, double* udot) const {
+  p_->set(q, u, Stage::Dynamics);
+  Vector accelerations;
+  Vector_<SpatialVec> a_gb;
+  p_->matter.calcAccelerationIgnoringConstraints(p_->state, p_->mobility(tau), p_->gravity.getBodyForces(p_->state),
+                                                 accelerations, a_gb);
+  p_->out(accelerations, udot);
+}
+
+}  // namespace mechcheck::audit::simbody_bridge

@@ -1,0 +1,138 @@
+// Simbody's equations of motion as a dynamics_library (adapters/simbody.hpp).
+#include <exception>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mechcheck/audit/adapters/detail/simbody_bridge.hpp"
+#include "mechcheck/audit/adapters/simbody.hpp"
+#include "mechcheck/robots/dynamics.hpp"
+
+namespace mechcheck::audit::simbody {
+
+namespace {
+namespace bridge = simbody_bridge;
+
+void copy(const Eigen::Matrix3d& m, double* out) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) out[3 * i + j] = m(i, j);
+}
+void copy(const Eigen::Vector3d& v, double* out) {
+  for (int i = 0; i < 3; ++i) out[i] = v(i);
+}
+
+/// The robot in the bridge's terms: its links parents first (the root welded to Ground),
+/// each link's inertia turned into its frame (R_o I R_o^T) about the centre of mass.
+bridge::robot_setup setup_of(const robots::robot& r, const robots::tree& t, coordinate_order& coordinates) {
+  bridge::robot_setup s;
+  copy(r.gravity, s.gravity);
+  std::vector<int> body_of(r.links.size(), -1);
+  const auto add = [&](int link, int parent, const robots::joint* j) {
+    bridge::robot_setup::body b;
+    b.parent = parent;
+    if (j) {
+      b.joint = j->type == robots::joint_type::prismatic ? 1 : j->type == robots::joint_type::fixed ? 2 : 0;
+      copy(robots::rpy_rotation<double>(j->origin.rpy), b.rotation);
+      copy(j->origin.xyz, b.position);
+      copy(j->axis, b.axis);
+    }
+    if (const auto& in = r.links[std::size_t(link)].body) {
+      const Eigen::Matrix3d ro = robots::rpy_rotation<double>(in->origin.rpy);
+      b.mass = in->mass;
+      copy(in->origin.xyz, b.com);
+      copy(Eigen::Matrix3d(ro * in->inertia * ro.transpose()), b.inertia);
+    }
+    body_of[std::size_t(link)] = static_cast<int>(s.bodies.size());
+    s.bodies.push_back(b);
+  };
+  add(t.root, -1, nullptr);
+  for (const int k : t.order) {
+    add(t.child_link[std::size_t(k)], body_of[std::size_t(t.parent_link[std::size_t(k)])], &r.joints[std::size_t(k)]);
+    if (t.coordinate[std::size_t(k)] >= 0) coordinates.order.push_back(t.coordinate[std::size_t(k)]);
+  }
+  return s;
+}
+
+class model final : public dynamics_model {
+ public:
+  explicit model(const robots::robot& r) {
+    const robots::tree t = robots::validate(r);
+    const bridge::robot_setup s = setup_of(r, t, coordinates_);
+    n_ = t.dofs;
+    try {
+      d_ = std::make_unique<bridge::robot_dynamics>(s);
+    } catch (const std::exception& e) {
+      throw robot_refused("simbody: " + one_line(e.what()));
+    }
+    if (d_->size() != n_)
+      throw error("simbody: the system has " + std::to_string(d_->size()) + " mobilities, the robot " + std::to_string(n_));
+  }
+  std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override {
+    const Eigen::VectorXd qs = in(q);
+    Eigen::MatrixXd m(n_, n_);
+    guarded("calcM", [&] { d_->mass_matrix(qs.data(), m.data()); });
+    m.transposeInPlace();  // the bridge writes row-major; Eigen's default is column-major
+    return coordinates_.from_library(m);
+  }
+  std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) override {
+    const Eigen::VectorXd qs = in(q), us = in(qdot);
+    Eigen::VectorXd h(n_);
+    guarded("calcResidualForceIgnoringConstraints", [&] { d_->bias(qs.data(), us.data(), h.data()); });
+    return out(h);
+  }
+  std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                                         const Eigen::VectorXd& qddot) override {
+    const Eigen::VectorXd qs = in(q), us = in(qdot), a = in(qddot);
+    Eigen::VectorXd tau(n_);
+    guarded("calcResidualForceIgnoringConstraints", [&] { d_->inverse(qs.data(), us.data(), a.data(), tau.data()); });
+    return out(tau);
+  }
+  std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                                         const Eigen::VectorXd& tau) override {
+    const Eigen::VectorXd qs = in(q), us = in(qdot), f = in(tau);
+    Eigen::VectorXd a(n_);
+    guarded("calcAccelerationIgnoringConstraints", [&] { d_->forward(qs.data(), us.data(), f.data(), a.data()); });
+    return out(a);
+  }
+
+ private:
+  static std::string one_line(const char* text) {
+    std::string s;
+    for (const char* c = text; *c; ++c) s += *c == '\n' ? ' ' : *c;
+    return s.size() > 240 ? s.substr(0, 240) + "..." : s;
+  }
+  template <class F>
+  static void guarded(const char* what, F&& f) {
+    try {
+      f();
+    } catch (const std::exception& e) {
+      throw error(std::string("simbody: ") + what + ": " + one_line(e.what()));
+    }
+  }
+  /// Coordinates in the bridge's order (the moving bodies') from the robot's, and back.
+  Eigen::VectorXd in(const Eigen::VectorXd& x) const { return coordinates_.to_library(x); }
+  Eigen::VectorXd out(const Eigen::VectorXd& x) const { return coordinates_.from_library(x); }
+
+  std::unique_ptr<bridge::robot_dynamics> d_;
+  coordinate_order coordinates_;  ///< the bridge's moving bodies
+  int n_ = 0;
+};
+}  // namespace
+
+dynamics_library dynamics() {
+  dynamics_library l;
+  l.name = "simbody";
+  l.origin = "Simbody " + version() +
+             " (libsimbody-dev): SimbodyMatterSubsystem::calcM; calcResidualForceIgnoringConstraints (f_residual = "
+             "M udot + f_inertial - f_applied) at udot = 0 for the bias and at qddot for inverse dynamics, and "
+             "calcAccelerationIgnoringConstraints for forward dynamics, the applied forces Force::Gravity's body "
+             "forces (and tau); the system built from the description: a Body::Rigid per link with "
+             "MassProperties about its origin (the central inertia R_o I R_o^T shifted by "
+             "Inertia::shiftFromMassCenter), a MobilizedBody::Pin or Slider whose frames F (at the joint's "
+             "origin) and M turn z (Pin) or x (Slider) onto the axis, a Weld for a fixed joint and the root; u = "
+             "qdot for both mobilizers";
+  l.load = [](const robots::robot& r) -> std::unique_ptr<dynamics_model> { return std::make_unique<model>(r); };
+  return l;
+}
+
+}  // namespace mechcheck::audit::simbody
