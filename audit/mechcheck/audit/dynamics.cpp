@@ -3,10 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <map>
+#include <mutex>
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 
+#include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/robots/dynamics.hpp"
 
 namespace mechcheck::audit {
@@ -81,6 +85,33 @@ exact_terms exact(const robots::robot& robot, const dynamics_state& x) {
   return out;
 }
 
+/// exact() remembered: a campaign runs every library on the same robots and states (one
+/// seed), and the mpfr50 reference is most of its time. Keyed by the robot's URDF (every
+/// number to 17 digits: it reads back bit for bit), its gravity and the state's bytes; the same terms
+/// either way, so reports do not depend on it. Cleared past 4096 entries.
+exact_terms exact_remembered(const robots::robot& robot, const dynamics_state& x) {
+  std::string key = to_urdf(robot);  // URDF has no gravity: its three numbers follow
+  key.append(reinterpret_cast<const char*>(robot.gravity.data()), 3 * sizeof(double));
+  for (const auto* v : {&x.q, &x.qdot, &x.qddot, &x.tau}) {
+    const std::size_t at = key.size();
+    key.resize(at + sizeof(Eigen::Index) + sizeof(double) * std::size_t(v->size()));
+    const Eigen::Index n = v->size();
+    std::memcpy(key.data() + at, &n, sizeof n);
+    if (n) std::memcpy(key.data() + at + sizeof n, v->data(), sizeof(double) * std::size_t(n));
+  }
+  static std::mutex mutex;
+  static std::map<std::string, exact_terms> memo;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (const auto it = memo.find(key); it != memo.end()) return it->second;
+  }
+  exact_terms e = exact(robot, x);
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (memo.size() >= 4096) memo.clear();
+  memo.emplace(std::move(key), e);
+  return e;
+}
+
 dynamics_residual residual_of(dynamics_quantity quantity, const Eigen::MatrixXd& library, const Eigen::MatrixXd& reference,
                               double scale, int links, const std::string& who) {
   dynamics_residual r;
@@ -110,9 +141,9 @@ dynamics_check check_dynamics(const dynamics_library& library, const robots::rob
     return out;
   }
   const std::optional<robots::robot> held = model->held_robot();
-  const exact_terms e = exact(held ? *held : robot, x);
+  const exact_terms e = exact_remembered(held ? *held : robot, x);
   if (held) {
-    const exact_terms given = exact(robot, x);
+    const exact_terms given = exact_remembered(robot, x);
     out.model_difference = max_abs(e.mass - given.mass) / (eps * given.scale_m);
     out.model_scale = given.scale_m;
   }

@@ -147,25 +147,30 @@ std::string verdict_of(const dynamics_campaign& c, const dynamics_campaign::quan
 }  // namespace
 
 void print_dynamics(std::ostream& out, const std::vector<dynamics_campaign>& campaigns) {
-  char line[256];
-  std::snprintf(line, sizeof line, "%-10s %-18s %7s %12s %8s  %s\n", "library", "quantity", "robots", "largest", "budget",
-                "verdict");
+  char line[512];
+  int width = 7;  // the library column: its longest name
+  for (const auto& c : campaigns) width = std::max(width, static_cast<int>(c.library.size()));
+  std::snprintf(line, sizeof line, "%-*s %-18s %7s %12s %8s  %s\n", width, "library", "quantity", "robots", "largest",
+                "budget", "verdict");
   out << "\nequations of motion against the exact Lagrangian (residual in eps of the terms' scale)\n" << line;
   for (const auto& c : campaigns) {
     for (const auto& f : c.figures) {
-      std::snprintf(line, sizeof line, "%-10s %-18s %7d %12s %8s  %s\n", c.library.c_str(), dynamics_quantity_name(f.quantity),
-                    f.checked, f.checked ? sci(f.largest).c_str() : "-", f.checked ? sci(f.budget).c_str() : "-",
-                    verdict_of(c, f).c_str());
+      std::snprintf(line, sizeof line, "%-*s %-18s %7d %12s %8s  %s\n", width, c.library.c_str(),
+                    dynamics_quantity_name(f.quantity), f.checked, f.checked ? sci(f.largest).c_str() : "-",
+                    f.checked ? sci(f.budget).c_str() : "-", verdict_of(c, f).c_str());
       out << line;
     }
     if (c.model_checked) {
-      std::snprintf(line, sizeof line, "%-10s %-18s %7d %12s %8s  %s\n", c.library.c_str(), "held robot", c.model_checked,
-                    sci(c.model_largest).c_str(), "-", "(its M against the given robot's)");
+      std::snprintf(line, sizeof line, "%-*s %-18s %7d %12s %8s  %s\n", width, c.library.c_str(), "held robot",
+                    c.model_checked, sci(c.model_largest).c_str(), "-", "(its M against the given robot's)");
       out << line;
     }
-    if (c.refused)
-      out << "  " << c.library << " refused " << c.refused << " of " << c.robots << " robots (the first: " << c.first_refusal
+    if (c.refused) {
+      std::string first = c.first_refusal;  // a library's message may run over lines: one here
+      std::replace(first.begin(), first.end(), '\n', ' ');
+      out << "  " << c.library << " refused " << c.refused << " of " << c.robots << " robots (the first: " << first
           << ")\n";
+    }
     if (!c.note.empty()) out << "  " << c.library << " failed: " << c.note << "\n";
     if (!c.disagreement.empty()) out << "  " << c.library << ", shrunk: " << c.disagreement << "\n";
   }
