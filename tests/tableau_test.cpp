@@ -516,10 +516,29 @@ TEST(tableau_file, an_order_claim_above_10_is_judged_by_its_trees_in_the_analysi
   measured.declared = "10";
   measured.result = outcome::contradicted;
   EXPECT_EQ(audit::with_algebra(measured, right[0].declared).result, outcome::confirmed);
-  // A library's own implementation of a table keeps its measured verdict.
+  // Confirmed and "to the precision given" agree: no sentence saying they differ.
+  measured.result = outcome::to_precision_given;
+  EXPECT_EQ(audit::with_algebra(measured, right[0].declared).evidence.find("The two differ"), std::string::npos);
+  // A library's own implementation of a table keeps its measured verdict where the
+  // coefficients hold the claim (its code can break what they hold)...
   audit::claims library = right[0].declared;
   library.algebra_decides = false;
+  library.algebra_refutes = true;
+  measured.result = outcome::contradicted;
   EXPECT_EQ(audit::with_algebra(measured, library).result, outcome::contradicted);
+  measured.result = outcome::confirmed;
+  EXPECT_EQ(audit::with_algebra(measured, library).result, outcome::confirmed);
+  // ...and the coefficients' contradiction stands however the runs measure.
+  audit::claims wrong_library = c;
+  wrong_library.algebra_decides = false;
+  wrong_library.algebra_refutes = true;
+  measured.declared = "11";
+  const audit::verdict refuted = audit::with_algebra(measured, wrong_library);
+  EXPECT_EQ(refuted.result, outcome::contradicted) << refuted.evidence;
+  EXPECT_NE(refuted.evidence.find("The two differ"), std::string::npos) << refuted.evidence;
+  // Without either, the measurement alone.
+  wrong_library.algebra_refutes = false;
+  EXPECT_EQ(audit::with_algebra(measured, wrong_library).result, outcome::confirmed);
 }
 
 /// A problem whose `member` defect study measured `worst` eps against a budget of 512.

@@ -140,12 +140,16 @@ struct claims {
   /// "symmetric"; tableau_file.hpp's add_algebraic_claims), each a verdict of exact
   /// arithmetic at the precision the coefficients are given to.
   std::vector<verdict> algebraic;
-  /// The stepper *is* a tableau file's tableau (tableau_file_steppers): where the algebra
-  /// decides a claim, its verdict stands and the measurement is quoted beside it (with why
-  /// it did not resolve the question where the two differ). A library's table (ARKODE's,
-  /// run by the library or through mechcheck's stepper) keeps its measured verdicts, the
-  /// algebra quoted: a finding about it needs a reproducer against the library.
+  /// The stepper *is* these coefficients (a tableau file's tableau, or a library's table
+  /// through mechcheck's stepper): where the algebra decides a claim, its verdict stands and
+  /// the measurement is quoted beside it (with why it did not resolve the question where the
+  /// two differ).
   bool algebra_decides = false;
+  /// The stepper is a library's own implementation of these coefficients (ARKODE running
+  /// its table): the algebra's contradiction stands (the coefficients fail the claim beyond
+  /// their precision whatever the code does with them), and otherwise the measurement does
+  /// (an implementation can break what its coefficients hold).
+  bool algebra_refutes = false;
 };
 
 /// What a method needs of a problem. The audit runs a method only on the problems that

@@ -478,18 +478,24 @@ inline verdict judge_energy(const claims& c, const std::vector<problem_audit>& p
 }
 
 /// Where a stepper is a tableau (claims::algebra_decides), the algebra's verdict on a
-/// claim stands and the measurement is quoted beside it; where the two differ, the evidence
+/// claim stands and the measurement is quoted beside it; where it is a library's own
+/// implementation of one (claims::algebra_refutes), the algebra's contradiction stands and
+/// otherwise the measurement. Where the two differ, the evidence
 /// says so and why the measurement did not decide: the algebra is exact arithmetic on the
 /// coefficients at the precision they are given to, the measurement a fit or a defect on a
 /// few problems in one tier, bounded by its floors.
 inline verdict with_algebra(const verdict& measured, const claims& c) {
-  if (!c.algebra_decides) return measured;
+  using outcome = verdict::outcome;
+  if (!c.algebra_decides && !c.algebra_refutes) return measured;
   const auto a = std::find_if(c.algebraic.begin(), c.algebraic.end(),
                               [&](const verdict& x) { return x.claim == measured.claim; });
-  if (a == c.algebraic.end() || a->result == verdict::outcome::not_declared) return measured;
+  if (a == c.algebraic.end() || a->result == outcome::not_declared) return measured;
+  if (!c.algebra_decides && a->result != outcome::contradicted) return measured;
   verdict v = *a;
   v.measured = a->measured + " (algebra)";
-  const bool differ = a->result != measured.result;
+  // Confirmed and "to the precision given" say the same of a claim: the two agree.
+  const auto holds = [](outcome o) { return o == outcome::confirmed || o == outcome::to_precision_given; };
+  const bool differ = a->result != measured.result && !(holds(a->result) && holds(measured.result));
   v.evidence = "the coefficients' algebra decides: " + a->evidence + ". The stepper measured: " +
                outcome_text(measured.result) + (measured.needs.empty() ? "" : " (needs " + measured.needs + ")") +
                ", measured " + measured.measured + " -- " + measured.evidence;
