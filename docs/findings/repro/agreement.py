@@ -8,6 +8,7 @@ Exits 1 when a pair disagrees or a number is missing, naming it."""
 import json
 import math
 import os
+import re
 import sys
 
 repro_dir, audit_dir = sys.argv[1], sys.argv[2]
@@ -73,6 +74,17 @@ def problem(report, name, tier, problem_name):
         if p["problem"] == problem_name:
             return p
     raise KeyError(f"{report}: {name} has no problem {problem_name}")
+
+
+def verdict_number(report, name, tier, claim, words):
+    """The number after `words` in a verdict's evidence (printed to two digits)."""
+    for v in stepper(report, name, tier)["verdicts"]:
+        if v["claim"] == claim:
+            found = re.search(re.escape(words) + r" ([0-9.]+e[-+][0-9]+)", v["evidence"])
+            if found:
+                return float(found.group(1))
+            raise KeyError(f"{report}: {name}'s {claim} evidence has no '{words}'")
+    raise KeyError(f"{report}: {name} has no {claim} verdict")
 
 
 def horizon(driver, multiple):
@@ -158,8 +170,18 @@ CHECKS = [
      lambda: engine_scenario("bullet::multibody", "four_bar", "engines-loop/engines.json")["constraint_first_step"]["loop"],
      1e-3, True),
     ("arkode-cash", "CASH_5_2_4's error plateau on the oscillator",
-     lambda: repro("arkode_cash_weights", "cash_5_2_4_error_n4096"),
+     lambda: repro("arkode_dirk_weights", "cash_5_2_4_error_n4096"),
      lambda: problem("double/audit.json", "arkode::ARKODE_CASH_5_2_4", "double", "oscillator")["global_order"]["stall"]["error"], 0.05, True),
+    # ARKODE's tables' order conditions: the audit's exact arithmetic on the stored doubles,
+    # printed to two digits, against the reproducer's long double sums: 5 % relative.
+    ("arkode-cash", "CASH_5_2_4's embedding: w . (A 1) - 1/2",
+     lambda: abs(repro("arkode_dirk_weights", "cash_5_2_4_embedding_order2_defect")),
+     lambda: verdict_number("double/audit.json", "arkode::ARKODE_CASH_5_2_4/embedding", "double", "order",
+                            "order 2 fails by"), 0.05, True),
+    ("arkode-billington", "BILLINGTON_3_3_2: sum(b) - 1",
+     lambda: abs(repro("arkode_dirk_weights", "billington_3_3_2_weight_sum_minus_one")),
+     lambda: verdict_number("double/audit.json", "arkode::ARKODE_BILLINGTON_3_3_2", "double", "order",
+                            "order 1 fails by"), 0.05, True),
     ("gsl-rk2", "rk2's propagated order",
      lambda: repro("gsl_step_order", "rk2_propagated_order"),
      lambda: problem("double/audit.json", "gsl::rk2", "double", "oscillator")["global_order"]["fit"]["value"], 0.05, False),
