@@ -27,7 +27,8 @@ Eigen::Isometry3d isometry(const robots::pose& p) {
 
 /// The link's inertia in its body frame: the tensor turned by its inertial origin's rotation
 /// (R_o I R_o^T), about the centre of mass at the origin's translation; a massless link
-/// (no <inertial>) gets mass 0, where DART's default BodyNode has mass 1.
+/// (no <inertial>) gets mass 0, where DART's default BodyNode has mass 1 (the root excepted,
+/// see dart_model).
 Inertia inertia_of(const robots::link& l) {
   if (!l.body) return Inertia(0, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero());
   const Eigen::Matrix3d ro = robots::rpy_rotation<double>(l.body->origin.rpy);
@@ -141,7 +142,8 @@ dynamics_library dynamics() {
              " (libdart6.12): Skeleton::getMassMatrix, getCoriolisAndGravityForces (C + N of DART's M qddot + C + "
              "N = tau, Skeleton.hpp), computeInverseDynamics without external, damping or spring forces, "
              "computeForwardDynamics; the Skeleton built from the description: a BodyNode per link with "
-             "Inertia(mass, centre of mass, R_o I R_o^T) in its frame (mass 0 for a link without one), a "
+             "Inertia(mass, centre of mass, R_o I R_o^T) in its frame (mass 0 for a link without one, but for the "
+             "root: welded to the world, it keeps DART's default mass 1, which never enters the equations), a "
              "RevoluteJoint or PrismaticJoint with T_ParentBodyToJoint the joint's origin and the axis in the "
              "child's frame, a WeldJoint for a fixed joint and for the root to the world; no joint damping, "
              "spring, Coulomb friction or enforced limit (DART 6.12 has no rotor inertia)";
