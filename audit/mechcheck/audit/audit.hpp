@@ -395,22 +395,33 @@ long_run run_long(const stepper_under_audit<T>& s, const problem<T>& pr,
   }
   // Rounding alone: one rounding per evaluation and per step, as a random walk, with
   // margin 8: the invariant is preserved by the method when its drift stays below this.
-  const double budget =
-      8 * eps_of<T>() * (run.evaluations_per_step + 1) * std::sqrt(double(std::max(done, 1LL)));
+  const auto rounding = [&](double steps) {
+    return 8 * eps_of<T>() * (run.evaluations_per_step + 1) * std::sqrt(std::max(steps, 1.0));
+  };
+  const double budget = rounding(double(done));
+  const double time_scale = pr.time_scale > 0 ? pr.time_scale : to_double(pr.t_end);
   for (std::size_t k = 0; k < pr.invariants.size(); ++k) {
     drift d;
     d.name = pr.invariants[k].name;
     d.max_relative = growth[k].max_error();
     d.budget_relative = budget;
     d.preserved = run.failure.empty() && d.max_relative <= budget;
-    d.exponent = growth[k].exponent();
     d.window_rms = growth[k].window_rms();
+    // The growth class past the start-up transient (classify_growth): each window's time and
+    // its own rounding budget as the floor.
+    const std::vector<double> steps_w = growth[k].window_steps();
+    std::vector<double> time(steps_w.size()), floor(steps_w.size());
+    for (std::size_t w = 0; w < steps_w.size(); ++w) {
+      time[w] = steps_w[w] * run.h;
+      floor[w] = rounding(steps_w[w]);
+    }
+    const growth_class g = classify_growth(time, d.window_rms, floor, time_scale, double(done) * run.h);
+    d.exponent = g.exponent;
     // An error of order one has saturated (the orbit escaped, the angle wrapped): its
     // growth exponent then says nothing about the method.
     d.kind = d.preserved               ? "preserved to rounding"
              : d.max_relative >= 0.25 ? "lost (error of order one)"
-             : d.exponent             ? growth_kind(*d.exponent)
-                                      : "not resolved";
+                                      : g.kind;
     run.invariants.push_back(d);
   }
   return run;

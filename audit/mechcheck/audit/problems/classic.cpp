@@ -88,6 +88,7 @@ problem<T> pleiades(const reference_settings& settings) {
   d.steps0 = 64;
   d.h_local = "0.01";
   d.h_long = "0.001";
+  d.time_scale = 3;  // the span of the reference (no long run: see below)
   // The least distance of two stars in [0, 3], by Stormer-Verlet at h = 1e-5.
   d.long_run_refused = "two stars pass within 0.034 of each other near t = 1.68, where a fixed step of 0.001 "
                        "moves them ~0.03: a fixed step does not resolve the encounter, and its energy error says "
@@ -110,6 +111,8 @@ problem<T> outer_solar_system(const reference_settings& settings) {
   d.steps0 = 64;
   d.h_local = "100";
   d.h_long = "10";
+  // Pluto's period (248 years), the slowest of the system: the long run (10^6 days) spans 11 of it.
+  d.time_scale = 90560;
   return gravity_problem<T>(
       d, 3, {"1.00000597682", "0.000954786104043", "0.000285583733151", "0.0000437273164546", "0.0000517759138449", "1/130000000"},
       "2.95912208286e-4",
@@ -134,6 +137,7 @@ problem<T> arenstorf(const reference_settings& settings) {
   d.steps0 = 256;
   d.h_local = "0.01";
   d.h_long = "0.001";
+  d.time_scale = 17.0652165601579625588917206249;  // the orbit's period
   arenstorf_system<T> s{from_text<T>("0.012277471", "arenstorf: mu")};
   return reference_problem<T>(d, s, arenstorf_system<mpfr50>{mpfr50(s.mu)}, {energy_invariant<T>(s)}, settings);
 }
@@ -155,6 +159,7 @@ problem<T> henon_heiles(bool chaotic, const reference_settings& settings) {
   d.steps0 = chaotic ? 1024 : 32;
   d.h_local = "0.5";
   d.h_long = "0.05";
+  d.time_scale = 2 * boost::math::constants::pi<double>();  // the small oscillations' period (omega = 1)
   d.separable = true;
   const henon_heiles_system s;
   return reference_problem<T>(d, s, s, {energy_invariant<T>(s)}, settings);
@@ -175,6 +180,9 @@ problem<T> double_pendulum(const reference_settings& settings) {
   d.steps0 = 32;
   d.h_local = "0.25";
   d.h_long = "0.01";
+  // The slower normal mode's period, 2 pi / sqrt(2 - sqrt 2) = 8.2 for small swings (Goldstein, 6.4),
+  // longer at 0.5 rad: t_end.
+  d.time_scale = 10;
   const hamiltonian_system<double_pendulum_hamiltonian> s{{}};
   return reference_problem<T>(d, s, s, {energy_invariant<T>(s)}, settings);
 }

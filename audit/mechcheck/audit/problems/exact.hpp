@@ -175,6 +175,10 @@ struct problem {
   /// Non-empty: no long run on this problem, and why (close encounters a fixed step does
   /// not resolve: its energy would say nothing of a method's claim).
   std::string long_run_refused;
+  /// The problem's slowest period (its time scale): the long run's growth is fitted past one
+  /// of it, and a long run shorter than ten of it is not resolvable (classify_growth). 0: t_end
+  /// (one period where the global study spans one).
+  double time_scale = 0;
 };
 
 namespace detail {
@@ -330,6 +334,7 @@ problem<T> free_top_problem() {
                    {"|M|^2", [](const dynamic_vector<T>& q, const dynamic_vector<T>&) -> T {
                       return q.squaredNorm();
                     }}};
+  pr.time_scale = static_cast<double>(reference::asymmetric_top_period(moments, w0));  // M's period in the body
   return pr;
 }
 
@@ -346,6 +351,7 @@ problem<T> twist_problem() {
                 false, true, system, x0, exact, T(4), 16, T(1) / 2, T(1) / 16,
                 detail::state_scale(x0), {}};
   pr.invariants = {detail::energy_of(system)};
+  pr.time_scale = 2 * boost::math::constants::pi<double>() / 1.25;  // the rotation's period at rate 5/4
   return pr;
 }
 

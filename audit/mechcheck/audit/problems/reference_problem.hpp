@@ -36,6 +36,7 @@ struct problem_definition {
   bool separable = false;    ///< H = T(p) + V(q): velocity and force apart
   bool canonical = true;
   std::string long_run_refused;  ///< problem::long_run_refused
+  double time_scale = 0;         ///< problem::time_scale (0: t_end)
 };
 
 /// How references are made: the solver's options, the cache, and progress.
@@ -188,6 +189,7 @@ problem<T> reference_problem(const problem_definition& d, const System& system,
   };
   pr.source = d.source;
   pr.long_run_refused = d.long_run_refused;
+  pr.time_scale = d.time_scale;
   return pr;
 }
 
