@@ -416,12 +416,11 @@ long_run run_long(const stepper_under_audit<T>& s, const problem<T>& pr,
       floor[w] = rounding(steps_w[w]);
     }
     const growth_class g = classify_growth(time, d.window_rms, floor, time_scale, double(done) * run.h);
-    d.exponent = g.exponent;
     // An error of order one has saturated (the orbit escaped, the angle wrapped): its
     // growth exponent then says nothing about the method.
-    d.kind = d.preserved               ? "preserved to rounding"
-             : d.max_relative >= 0.25 ? "lost (error of order one)"
-                                      : g.kind;
+    const bool lost = d.max_relative >= 0.25;
+    if (!d.preserved && !lost) d.exponent = g.exponent;
+    d.kind = d.preserved ? "preserved to rounding" : lost ? "lost (error of order one)" : g.kind;
     run.invariants.push_back(d);
   }
   return run;
