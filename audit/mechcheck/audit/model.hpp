@@ -75,7 +75,9 @@ struct model_setup {
   std::vector<std::string> q0;  ///< the initial coordinates (a vector field: its state)
   /// The initial momenta (Hamiltonian) or velocities (Lagrangian); empty for a vector field.
   std::vector<std::string> p0;
-  std::string t_end = "1";  ///< end time of the global order study
+  /// End time of the global order study, and the time scale of the long run's growth class
+  /// (a run under ten of it is not resolvable; problem::time_scale): best one period.
+  std::string t_end = "1";
   std::string h_local;      ///< first step of the local studies; empty: t_end / 8
   std::string h_long;       ///< step of the long run; empty: t_end / 256
   long steps0 = 16;         ///< the global study's coarsest run
