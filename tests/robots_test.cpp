@@ -245,6 +245,33 @@ TEST(robots, urdf_round_trips_every_number_and_refuses_what_is_not_urdf) {
           "joint j origin xyz: \"x\" is not a number");
   refused(head + "<joint name='j' type='revolute'><parent link='a'/><child link='c'/></joint></robot>",
           "its child \"c\" is not a link");
+  // What URDF does not have is refused by name, not read as absent (issue 44, item 9).
+  const std::string joint = "<joint name='j' type='revolute'><parent link='a'/><child link='b'/></joint></robot>";
+  refused("<robot name='r'><link name='a'/><link name='b'><inertail><mass value='1'/></inertail></link>" + joint,
+          "link b: <inertail> is not an element of URDF's <link> (it has inertial, visual, collision)");
+  refused("<robot name='r'><link name='a'/><link name='b'><inertial><mass value='1'/><inertia ixx='1' iyx='0' "
+          "ixz='0' iyy='1' iyz='0' izz='1'/></inertial></link>" + joint,
+          "link b inertia: iyx= is not an attribute of URDF's <inertia> (it has ixx, ixy, ixz, iyy, iyz, izz)");
+  refused("<robot name='r'><link name='a'/><link name='b'><inertial><mass value='1'/><mass value='2'/><inertia "
+          "ixx='1' ixy='0' ixz='0' iyy='1' iyz='0' izz='1'/></inertial></link>" + joint,
+          "link b inertial: <inertial> has more than one <mass>");
+  refused(head + "<joint name='j' type='revolute'><parent link='a'/><child link='b'/><axis xyz='0 0 1' "
+                 "rpy='0 0 0'/></joint></robot>",
+          "joint j axis: rpy= is not an attribute of URDF's <axis> (it has xyz)");
+  refused(head + "<joint name='j' type='revolute'><parent link='a'/><child link='b'/><orgin xyz='0 0 1'/></joint></robot>",
+          "joint j: <orgin> is not an element of URDF's <joint>");
+  refused(head + "<joint name='j' type='revolute'><parent link='a'/><child link='b'/><origin xyz='0 0 1' "
+                 "rpy='0 0 0' ryp='1 0 0'/></joint></robot>",
+          "joint j origin: ryp= is not an attribute of URDF's <origin> (it has xyz, rpy)");
+  refused(head + "<jiont name='k'/></robot>", "robot r: <jiont> is not an element of URDF's <robot>");
+  // URDF's own elements that are not dynamics are accepted and not read.
+  EXPECT_NO_THROW(audit::parse_urdf(
+      "<robot name='r' xmlns:xacro='http://ros.org/wiki/xacro'><material name='m'/><link name='a'><visual/>"
+      "<collision/><collision/></link><link name='b'><inertial><origin xyz='0 0 0' rpy='0 0 0'/><mass value='1'/>"
+      "<inertia ixx='1' ixy='0' ixz='0' iyy='1' iyz='0' izz='1'/></inertial></link><joint name='j' type='revolute'>"
+      "<parent link='a'/><child link='b'/><axis xyz='0 0 1'/><limit lower='-1' upper='1' effort='1' velocity='1'/>"
+      "<dynamics damping='0.1'/></joint><gazebo/></robot>",
+      "test.urdf"));
 }
 
 /// A library that computes with a description changed by `wrong`: what the check must catch.

@@ -1,6 +1,7 @@
 // URDF read and written by tinyxml2 (problems/urdf.hpp).
 #include "mechcheck/audit/problems/urdf.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <fstream>
@@ -46,10 +47,44 @@ Eigen::Vector3d triple(const char* text, const std::string& what) {
   return v;
 }
 
+/// URDF's own vocabulary (https://wiki.ros.org/urdf/XML): an element's children and
+/// attributes outside it are refused by name, so that a misspelt <inertail> or ixy= is not
+/// read as an absent one. Children of elements that are not dynamics (visual, collision,
+/// limit, ...) are not looked into; a robot's namespace declarations (xmlns:...) are allowed.
+void known(const tinyxml2::XMLElement* e, std::initializer_list<std::string_view> children,
+           std::initializer_list<std::string_view> attributes, const std::string& what) {
+  const auto list = [](std::initializer_list<std::string_view> names) {
+    std::string out;
+    for (const std::string_view n : names) out += (out.empty() ? "" : ", ") + std::string(n);
+    return out.empty() ? std::string("none") : out;
+  };
+  const auto in = [](std::initializer_list<std::string_view> names, std::string_view n) {
+    return std::find(names.begin(), names.end(), n) != names.end();
+  };
+  for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    if (!in(children, c->Name()))
+      throw robot_error(what + ": <" + c->Name() + "> is not an element of URDF's <" + e->Name() + "> (it has " +
+                        list(children) + ")");
+    // The elements read once must be there once: a second would be silently ignored.
+    const std::string_view n = c->Name();
+    const bool repeatable = n == "link" || n == "joint" || n == "material" || n == "transmission" || n == "gazebo" ||
+                            n == "visual" || n == "collision";
+    if (!repeatable && c->NextSiblingElement(c->Name()))
+      throw robot_error(what + ": <" + e->Name() + "> has more than one <" + c->Name() + ">");
+  }
+  for (const tinyxml2::XMLAttribute* a = e->FirstAttribute(); a; a = a->Next()) {
+    const std::string_view n = a->Name();
+    if (in(attributes, n) || (std::string_view(e->Name()) == "robot" && n.substr(0, 5) == "xmlns")) continue;
+    throw robot_error(what + ": " + std::string(n) + "= is not an attribute of URDF's <" + e->Name() + "> (it has " +
+                      list(attributes) + ")");
+  }
+}
+
 robots::pose pose_of(const tinyxml2::XMLElement* parent, const std::string& what) {
   robots::pose p;
   const tinyxml2::XMLElement* o = parent->FirstChildElement("origin");
   if (!o) return p;
+  known(o, {}, {"xyz", "rpy"}, what + " origin");
   if (const char* xyz = o->Attribute("xyz")) p.xyz = triple(xyz, what + " origin xyz");
   if (const char* rpy = o->Attribute("rpy")) p.rpy = triple(rpy, what + " origin rpy");
   return p;
@@ -78,6 +113,7 @@ robots::robot parse_urdf(const std::string& document, const std::string& origin)
   robots::robot r;
   if (const char* name = top->Attribute("name")) r.name = name;
   const std::string who = origin + ": robot " + r.name;
+  known(top, {"link", "joint", "material", "transmission", "gazebo"}, {"name", "version"}, who);
   for (const tinyxml2::XMLNode* n = doc.FirstChild(); n; n = n->NextSibling())
     if (const tinyxml2::XMLComment* c = n->ToComment()) {
       const std::string_view s(c->Value());
@@ -94,14 +130,18 @@ robots::robot parse_urdf(const std::string& document, const std::string& origin)
     if (!name || !*name) throw robot_error(who + ": a <link> without a name");
     l.name = name;
     const std::string what = who + ": link " + l.name;
+    known(e, {"inertial", "visual", "collision"}, {"name"}, what);
     if (const tinyxml2::XMLElement* in = e->FirstChildElement("inertial")) {
+      known(in, {"origin", "mass", "inertia"}, {}, what + " inertial");
       robots::inertial b;
       b.origin = pose_of(in, what + " inertial");
       const tinyxml2::XMLElement* mass = in->FirstChildElement("mass");
       if (!mass) throw robot_error(what + ": <inertial> without <mass>");
+      known(mass, {}, {"value"}, what + " mass");
       b.mass = attribute(mass, "value", what + " mass");
       const tinyxml2::XMLElement* i = in->FirstChildElement("inertia");
       if (!i) throw robot_error(what + ": <inertial> without <inertia>");
+      known(i, {}, {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"}, what + " inertia");
       const double ixx = attribute(i, "ixx", what + " inertia"), ixy = attribute(i, "ixy", what + " inertia"),
                    ixz = attribute(i, "ixz", what + " inertia"), iyy = attribute(i, "iyy", what + " inertia"),
                    iyz = attribute(i, "iyz", what + " inertia"), izz = attribute(i, "izz", what + " inertia");
@@ -116,6 +156,8 @@ robots::robot parse_urdf(const std::string& document, const std::string& origin)
     if (!name || !*name) throw robot_error(who + ": a <joint> without a name");
     j.name = name;
     const std::string what = who + ": joint " + j.name;
+    known(e, {"origin", "parent", "child", "axis", "calibration", "dynamics", "limit", "mimic", "safety_controller"},
+          {"name", "type"}, what);
     const char* type = e->Attribute("type");
     if (!type) throw robot_error(what + " has no type");
     const std::string t(type);
@@ -131,11 +173,14 @@ robots::robot parse_urdf(const std::string& document, const std::string& origin)
       const tinyxml2::XMLElement* x = e->FirstChildElement(tag);
       const char* link = x ? x->Attribute("link") : nullptr;
       if (!link) throw robot_error(what + ": no <" + tag + " link=...>");
+      known(x, {}, {"link"}, what + " " + tag);
       *target = link;
     }
     j.origin = pose_of(e, what);
-    if (const tinyxml2::XMLElement* a = e->FirstChildElement("axis"))
+    if (const tinyxml2::XMLElement* a = e->FirstChildElement("axis")) {
+      known(a, {}, {"xyz"}, what + " axis");
       if (const char* xyz = a->Attribute("xyz")) j.axis = triple(xyz, what + " axis");
+    }
     r.joints.push_back(std::move(j));
   }
   // Refuse here what the dynamics would: the messages name the file.
