@@ -9,13 +9,49 @@
 #   GROUPING family  one translation unit per directory (family) and tier: the laws of a
 #                    family share their instantiations, so a clean build is faster
 #                    (law files of one family must not reuse a name at file scope).
-#   GROUPING tier    one translation unit per tier for all the laws: they share every
-#                    instantiation, so the clean build does least work (the release
-#                    preset; law files must not reuse a name at file scope at all).
+#   GROUPING tier    the laws of a tier in BATCHES translation units (default 1), the law
+#                    files dealt out by size so that the batches take about the same time:
+#                    the laws of a batch share every instantiation, so a clean build does
+#                    least work with few batches, and no unit is long with more (the
+#                    release preset; law files must not reuse a name at file scope at all).
 #   TIERS            the tiers to compile (default all three; a law registers only in the
 #                    tiers compiled).
 function(mechcheck_add_laws target)
-  cmake_parse_arguments(ARG "" "BASE_DIR;GROUPING" "SOURCES;TIERS" ${ARGN})
+  cmake_parse_arguments(ARG "" "BASE_DIR;GROUPING;BATCHES" "SOURCES;TIERS" ${ARGN})
+  if(NOT ARG_BATCHES)
+    set(ARG_BATCHES 1)
+  endif()
+  if(NOT ARG_BATCHES MATCHES "^[1-9][0-9]*$")
+    message(FATAL_ERROR "mechcheck_add_laws: BATCHES '${ARG_BATCHES}' is not a positive integer")
+  endif()
+  # The tier grouping's batches: each law file (largest first) to the lightest batch.
+  if(ARG_GROUPING STREQUAL "tier")
+    set(sized "")
+    foreach(src IN LISTS ARG_SOURCES)
+      get_filename_component(abs ${src} ABSOLUTE)
+      file(SIZE ${abs} bytes)
+      math(EXPR key "1000000000 - ${bytes}")
+      list(APPEND sized "${key}|${abs}")
+    endforeach()
+    list(SORT sized COMPARE NATURAL)
+    math(EXPR last_batch "${ARG_BATCHES} - 1")
+    foreach(b RANGE ${last_batch})
+      set(batch_bytes_${b} 0)
+    endforeach()
+    foreach(entry IN LISTS sized)
+      string(REGEX REPLACE "^([0-9]+)\\|(.*)$" "\\1" key "${entry}")
+      string(REGEX REPLACE "^([0-9]+)\\|(.*)$" "\\2" abs "${entry}")
+      math(EXPR bytes "1000000000 - ${key}")
+      set(lightest 0)
+      foreach(b RANGE ${last_batch})
+        if(batch_bytes_${b} LESS batch_bytes_${lightest})
+          set(lightest ${b})
+        endif()
+      endforeach()
+      math(EXPR batch_bytes_${lightest} "${batch_bytes_${lightest}} + ${bytes}")
+      set(batch_of_${abs} ${lightest})
+    endforeach()
+  endif()
   if(NOT ARG_GROUPING)
     set(ARG_GROUPING law)
   endif()
@@ -43,8 +79,10 @@ function(mechcheck_add_laws target)
   foreach(src IN LISTS ARG_SOURCES)
     get_filename_component(abs ${src} ABSOLUTE)
     file(RELATIVE_PATH rel ${ARG_BASE_DIR} ${abs})
-    if(ARG_GROUPING STREQUAL "tier")
+    if(ARG_GROUPING STREQUAL "tier" AND ARG_BATCHES EQUAL 1)
       set(group "laws")
+    elseif(ARG_GROUPING STREQUAL "tier")
+      set(group "laws_${batch_of_${abs}}")
     elseif(ARG_GROUPING STREQUAL "family")
       get_filename_component(group ${rel} DIRECTORY)
       if(group STREQUAL "")
