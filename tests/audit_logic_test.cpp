@@ -275,7 +275,7 @@ TEST(audit_growth, a_transient_is_not_growth_and_a_short_run_is_not_resolvable) 
   EXPECT_EQ(classify([](double t) { return t > 200 && t < 600 ? 1e-9 : 1e-16; }).kind.rfind("not resolvable: 2 windows", 0), 0u);
   // A run of under ten time scales: not resolvable, whatever the windows hold.
   const auto short_run = run_to([](double t) { return 1e-9 * t; }, 99);
-  EXPECT_EQ(short_run.kind, "not resolvable: the run reaches t = 99, under ten of its time scale 10");
+  EXPECT_EQ(short_run.kind, "not resolvable: the run reaches t = 99, under ten of the scenario's time scale 10");
   EXPECT_FALSE(short_run.exponent);
 }
 
@@ -378,7 +378,7 @@ TEST(audit_growth, the_long_run_names_the_class_of_a_constructed_energy_error) {
   EXPECT_EQ(plateau.kind, "bounded") << plateau.kind;
   // 2^8 steps reach t = 50.3, under ten periods: not resolvable, whatever the drift.
   const auto short_run = energy(long_run_of([](long n) { return 1e-9 * double(n); }, 1 << 8));
-  EXPECT_EQ(short_run.kind.rfind("not resolvable: the run reaches t = 50.3, under ten of its time scale 6.28", 0), 0u)
+  EXPECT_EQ(short_run.kind.rfind("not resolvable: the run reaches t = 50.3, under ten of the problem's time scale 6.28", 0), 0u)
       << short_run.kind;
 }
 

@@ -415,7 +415,7 @@ long_run run_long(const stepper_under_audit<T>& s, const problem<T>& pr,
       time[w] = steps_w[w] * run.h;
       floor[w] = rounding(steps_w[w]);
     }
-    const growth_class g = classify_growth(time, d.window_rms, floor, time_scale, double(done) * run.h);
+    const growth_class g = classify_growth(time, d.window_rms, floor, time_scale, double(done) * run.h, "problem");
     // An error of order one has saturated (the orbit escaped, the angle wrapped): its
     // growth exponent then says nothing about the method.
     const bool lost = d.max_relative >= 0.25;

@@ -316,7 +316,8 @@ inline std::string growth_kind(double g) {
 }
 
 /// The growth class of a long run's error from its windows (growth_recorder's): window w's
-/// mean time time[w], RMS rms[w] and the rounding floor floor[w] at its step count. A start-up
+/// mean time time[w], RMS rms[w] and the rounding floor floor[w] at its step count (`owner`
+/// names what the time scale is of in the words: "scenario", "problem"). A start-up
 /// transient must not read as growth: a body that leaves an axis lifts the error from the
 /// rounding floor to a plateau, and a fit across the jump reads "t^2.4". So
 ///  - a run shorter than ten of the scenario's or problem's time scales (its slowest period,
@@ -333,7 +334,8 @@ struct growth_class {
 };
 
 inline growth_class classify_growth(const std::vector<double>& time, const std::vector<double>& rms,
-                                    const std::vector<double>& floor, double time_scale, double t_end) {
+                                    const std::vector<double>& floor, double time_scale, double t_end,
+                                    const std::string& owner = "scenario") {
   growth_class g;
   const auto text = [](double x) {
     std::ostringstream o;
@@ -341,7 +343,7 @@ inline growth_class classify_growth(const std::vector<double>& time, const std::
     return o.str();
   };
   if (!(t_end >= 10 * time_scale)) {
-    g.kind = "not resolvable: the run reaches t = " + text(t_end) + ", under ten of its time scale " +
+    g.kind = "not resolvable: the run reaches t = " + text(t_end) + ", under ten of the " + owner + "'s time scale " +
              text(time_scale);
     return g;
   }
