@@ -376,6 +376,13 @@ TEST(audit_growth, the_long_run_names_the_class_of_a_constructed_energy_error) {
   // on, as the long run once made, reads it as faster than linear.
   const auto plateau = energy(long_run_of([](long n) { return n < 4096 ? 0.0 : 1e-7; }));
   EXPECT_EQ(plateau.kind, "bounded") << plateau.kind;
+  std::vector<double> window_time;
+  std::vector<std::size_t> from_6;
+  for (std::size_t w = 0; w < plateau.window_rms.size(); ++w) {
+    window_time.push_back(1.5 * std::ldexp(1.0, static_cast<int>(w)));
+    if (w >= 6 && plateau.window_rms[w] > 0) from_6.push_back(w);
+  }
+  EXPECT_GT(audit::log_log_slope(window_time, plateau.window_rms, from_6).value_or(0), 1.5);
   // 2^8 steps reach t = 50.3, under ten periods: not resolvable, whatever the drift.
   const auto short_run = energy(long_run_of([](long n) { return 1e-9 * double(n); }, 1 << 8));
   EXPECT_EQ(short_run.kind.rfind("not resolvable: the run reaches t = 50.3, under ten of the problem's time scale 6.28", 0), 0u)

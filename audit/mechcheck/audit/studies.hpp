@@ -321,7 +321,8 @@ inline std::string growth_kind(double g) {
 /// transient must not read as growth: a body that leaves an axis lifts the error from the
 /// rounding floor to a plateau, and a fit across the jump reads "t^2.4". So
 ///  - a run shorter than ten of the scenario's or problem's time scales (its slowest period,
-///    stated per scenario and problem) is not resolvable: its last decade of time would hold less than one period;
+///    stated per scenario and problem) is not resolvable: its last decade of time would
+///    hold less than one period;
 ///  - only windows past one time scale and above their rounding floor are fitted;
 ///  - a plateau over the run's last decade (three windows or more there, all above the
 ///    floor, fitted exponent below 1/4) is bounded, whatever came before it;
