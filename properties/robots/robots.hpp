@@ -36,7 +36,8 @@ struct robot_sample {
   explicit robot_sample(gen::robot_case rc)
       : c(std::move(rc)), model(c.robot), q(gen::to_tier<T>(c.q)), qdot(gen::to_tier<T>(c.qdot)),
         qddot(gen::to_tier<T>(c.qddot)), tau(gen::to_tier<T>(c.tau)), links(model.dofs()) {
-    RC_TAG(std::to_string(c.robot.joints.size()) + " joints");
+    const std::size_t joints = c.robot.joints.size();
+    RC_TAG(std::to_string(joints) + (joints == 1 ? " joint" : " joints"));
   }
 };
 

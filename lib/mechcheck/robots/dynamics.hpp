@@ -301,11 +301,12 @@ dynamic_vector<T> forward_dynamics(const robot_model<T>& m, const dynamic_vector
 /// lever arm about any joint is bounded by its centre of mass offset plus every joint offset
 /// and slide on its path to the root (r_i); then
 ///   inertia = sum m_i r_i^2 + |I_i|_max   (M's entries: parallel-axis terms, eq 160),
-///   gravity = sum m_i |g| r_i             (dV/dq's terms).
+///   gravity = sum m_i |g| r_i             (dV/dq's terms),
+///   mass    = sum m_i                     (M's entries along slides; d(m r^2)/dr <= m (1 + r^2)).
 /// Near a pose where a centre of mass lies on an axis, or a link hangs straight, M and g
 /// cancel to far less than these, and rounding stays relative to them.
 struct term_scale {
-  double inertia = 0, gravity = 0;
+  double inertia = 0, gravity = 0, mass = 0;
 };
 
 template <class T>
@@ -325,6 +326,7 @@ term_scale term_scales(const robot_model<T>& m, const Eigen::VectorXd& q) {
       const double r = path[i] + b->origin.xyz.norm();
       out.inertia += b->mass * r * r + b->inertia.cwiseAbs().maxCoeff();
       out.gravity += b->mass * m.description.gravity.norm() * r;
+      out.mass += b->mass;
     }
   return out;
 }
