@@ -47,41 +47,23 @@ Eigen::MatrixXd narrowed(const dynamic_matrix<mpfr50>& m) {
 /// The exact quantities and their scales at a state.
 struct exact_terms {
   Eigen::MatrixXd mass;
-  Eigen::VectorXd bias, gravity, tau, qddot;
+  Eigen::VectorXd bias, tau, qddot;
   double scale_m = 0, scale_h = 0, scale_tau = 0, scale_forward = 0;
   int moving_links = 0;
 };
 
 exact_terms exact(const robots::robot& robot, const dynamics_state& x) {
-  const robots::robot_model<mpfr50> m(robot);
-  const int n = m.dofs();
-  for (const auto* v : {&x.q, &x.qdot, &x.qddot, &x.tau})
-    if (v->size() != n)
-      throw dimension_error("check_dynamics: robot " + robot.name + " has " + std::to_string(n) +
-                            " coordinates, a state vector has " + std::to_string(v->size()));
-  const dynamic_vector<mpfr50> q = widened<mpfr50>(x.q), qdot = widened<mpfr50>(x.qdot);
-  const robots::motion_terms<mpfr50> e = robots::motion_terms_at(m, q, qdot);
-  const dynamic_vector<mpfr50> g = robots::gravity_forces(m, q);
+  const reference_terms r = reference_terms_at(robot, x);
   exact_terms out;
-  out.mass = narrowed(e.mass_matrix);
-  out.bias = narrowed(e.bias);
-  out.gravity = narrowed(g);
-  const dynamic_vector<mpfr50> tau = e.mass_matrix * widened<mpfr50>(x.qddot) + e.bias;
-  out.tau = narrowed(tau);
-  const Eigen::LLT<dynamic_matrix<mpfr50>> llt(e.mass_matrix);
-  if (llt.info() != Eigen::Success)
-    throw singular_error("check_dynamics: robot " + robot.name + ": its mass matrix is not positive definite");
-  const dynamic_vector<mpfr50> rhs = widened<mpfr50>(x.tau) - e.bias;
-  out.qddot = narrowed(llt.solve(rhs));
-  const robots::term_scale terms = robots::term_scales(m, x.q);
-  const double m_max = std::max(max_abs(out.mass), terms.inertia), v = max_abs(x.qdot), a = max_abs(x.qddot);
-  out.scale_m = m_max;
-  out.scale_h = std::max({max_abs(out.gravity), terms.gravity, max_abs(Eigen::VectorXd(out.bias - out.gravity)), m_max * v * v});
-  out.scale_tau = std::max(out.scale_h, m_max * a);
-  const Eigen::MatrixXd inv = n ? Eigen::MatrixXd(out.mass.inverse()) : Eigen::MatrixXd();
-  const double cond = max_row_sum(out.mass) * max_row_sum(inv);
-  out.scale_forward = cond * max_abs(out.qddot) + max_row_sum(inv) * std::max(out.scale_h, max_abs(x.tau));
-  out.moving_links = n;
+  out.mass = narrowed(r.mass);
+  out.bias = narrowed(r.bias);
+  out.tau = narrowed(r.tau);
+  out.qddot = narrowed(r.qddot);
+  out.scale_m = r.scale_m;
+  out.scale_h = r.scale_h;
+  out.scale_tau = r.scale_tau;
+  out.scale_forward = r.scale_forward;
+  out.moving_links = r.moving_links;
   return out;
 }
 
@@ -156,6 +138,39 @@ dynamics_check check_dynamics(const dynamics_library& library, const robots::rob
     out.residuals.push_back(residual_of(dynamics_quantity::inverse, *t, e.tau, e.scale_tau, e.moving_links, who));
   if (const auto a = model->forward(x.q, x.qdot, x.tau))
     out.residuals.push_back(residual_of(dynamics_quantity::forward, *a, e.qddot, e.scale_forward, e.moving_links, who));
+  return out;
+}
+
+reference_terms reference_terms_at(const robots::robot& robot, const dynamics_state& x) {
+  const robots::robot_model<mpfr50> m(robot);
+  const int n = m.dofs();
+  for (const auto* v : {&x.q, &x.qdot, &x.qddot, &x.tau})
+    if (v->size() != n)
+      throw dimension_error("check_dynamics: robot " + robot.name + " has " + std::to_string(n) +
+                            " coordinates, a state vector has " + std::to_string(v->size()));
+  const dynamic_vector<mpfr50> q = widened<mpfr50>(x.q), qdot = widened<mpfr50>(x.qdot);
+  const robots::motion_terms<mpfr50> e = robots::motion_terms_at(m, q, qdot);
+  reference_terms out;
+  out.mass = e.mass_matrix;
+  out.bias = e.bias;
+  out.tau = e.mass_matrix * widened<mpfr50>(x.qddot) + e.bias;
+  const Eigen::LLT<dynamic_matrix<mpfr50>> llt(e.mass_matrix);
+  if (llt.info() != Eigen::Success)
+    throw singular_error("check_dynamics: robot " + robot.name + ": its mass matrix is not positive definite");
+  const dynamic_vector<mpfr50> rhs = widened<mpfr50>(x.tau) - e.bias;
+  out.qddot = llt.solve(rhs);
+  // The scales, from the values rounded to double (a magnitude needs no more).
+  const Eigen::MatrixXd mass = narrowed(out.mass), bias = narrowed(out.bias), qddot = narrowed(out.qddot);
+  const Eigen::MatrixXd gravity = narrowed(robots::gravity_forces(m, q));
+  const robots::term_scale terms = robots::term_scales(m, x.q);
+  const double m_max = std::max(max_abs(mass), terms.inertia), v = max_abs(x.qdot), a = max_abs(x.qddot);
+  out.scale_m = m_max;
+  out.scale_h = std::max({max_abs(gravity), terms.gravity, max_abs(Eigen::MatrixXd(bias - gravity)), m_max * v * v});
+  out.scale_tau = std::max(out.scale_h, m_max * a);
+  const Eigen::MatrixXd inv = n ? Eigen::MatrixXd(mass.inverse()) : Eigen::MatrixXd();
+  const double cond = max_row_sum(mass) * max_row_sum(inv);
+  out.scale_forward = cond * max_abs(qddot) + max_row_sum(inv) * std::max(out.scale_h, max_abs(x.tau));
+  out.moving_links = n;
   return out;
 }
 

@@ -39,6 +39,13 @@ class robot_refused : public error {
   using error::error;
 };
 
+/// A library's failure on a robot it accepted: an error code returned, a value of the wrong
+/// size. The message names the library, the quantity and the status.
+class library_failure : public error {
+ public:
+  using error::error;
+};
+
 /// The quantities of the equations of motion.
 enum class dynamics_quantity { mass_matrix, bias, inverse, forward };
 const char* dynamics_quantity_name(dynamics_quantity q);
@@ -131,6 +138,19 @@ dynamics_check check_dynamics(const dynamics_library& library, const robots::rob
 /// The reference quantities in double (rounded once from mpfr50).
 dynamics_residual reference_only(dynamics_quantity quantity, const robots::robot& robot, const dynamics_state& state);
 
+/// The exact quantities at a state in mpfr50, unrounded, with the scales of the residual
+/// (above): what a library computing in another tier is held to (user_dynamics.hpp).
+struct reference_terms {
+  dynamic_matrix<mpfr50> mass;
+  dynamic_vector<mpfr50> bias, tau, qddot;
+  double scale_m = 0, scale_h = 0, scale_tau = 0, scale_forward = 0;
+  int moving_links = 0;
+};
+reference_terms reference_terms_at(const robots::robot& robot, const dynamics_state& state);
+
+/// How a campaign checks one robot at one state (check_dynamics for a dynamics_library).
+using dynamics_checker = std::function<dynamics_check(const robots::robot&, const dynamics_state&)>;
+
 /// A library over random robots (generators.hpp: robot_cases): the largest residual of each
 /// quantity in eps of its scale, the robots run and refused, and the first disagreement --
 /// RapidCheck's shrunk counterexample: the minimal robot as URDF, its state, both values,
@@ -146,6 +166,9 @@ struct dynamics_campaign {
     int checked = 0;
     double largest = 0;   ///< residual, eps of the scale
     double budget = 0;    ///< the budget at the largest
+    /// The largest residual among the robots of n moving joints, at index n - 1 (0 where
+    /// none was checked): how the error grows with the tree, for the report's plot.
+    std::vector<double> largest_by_joints;
   };
   std::vector<quantity_figure> figures;
   /// Where the library holds another robot than the one given: the largest
@@ -173,8 +196,14 @@ dynamics_campaign run_dynamics_campaign(const dynamics_library& library, const d
 dynamics_campaign run_dynamics_on(const dynamics_library& library, const robots::robot& robot,
                                   const dynamics_options& options);
 
+/// The same two, for a target named `name` checked by `check` (a library in another tier:
+/// user_dynamics.hpp). `robot` null: random robots.
+dynamics_campaign run_dynamics_checker(const std::string& name, const std::string& origin, const dynamics_checker& check,
+                                       const dynamics_options& options, const robots::robot* robot = nullptr);
+
 /// The campaigns as a console table, JSON and Markdown (written into `directory`, with each
-/// counterexample as a URDF file); the files written.
+/// counterexample as a URDF file, and per quantity an SVG of each library's largest residual
+/// against the robots' moving joints beside the budget); the files written.
 void print_dynamics(std::ostream& out, const std::vector<dynamics_campaign>& campaigns);
 std::vector<std::string> write_dynamics_report(const std::string& directory, const std::vector<dynamics_campaign>& campaigns);
 

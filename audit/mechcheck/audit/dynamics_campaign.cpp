@@ -10,6 +10,7 @@
 
 #include "mechcheck/audit/dynamics.hpp"
 #include "mechcheck/audit/problems/urdf.hpp"
+#include "mechcheck/audit/report.hpp"
 #include "mechcheck/harness/generators.hpp"
 
 namespace mechcheck::audit {
@@ -37,11 +38,11 @@ std::string vector_text(const Eigen::MatrixXd& m) {
 
 /// The campaign's property over cases drawn by `draw`: figures recorded until the first
 /// disagreement (then RapidCheck shrinks it, and the last failing case is the minimal one).
-dynamics_campaign campaign(const dynamics_library& library, const dynamics_options& opt,
-                           const std::function<generators::robot_case()>& draw) {
+dynamics_campaign campaign(const std::string& name, const std::string& origin, const dynamics_checker& checker,
+                           const dynamics_options& opt, const std::function<generators::robot_case()>& draw) {
   dynamics_campaign c;
-  c.library = library.name;
-  c.origin = library.origin;
+  c.library = name;
+  c.origin = origin;
   c.seed = opt.seed;
   c.max_links = opt.max_links;
   for (const auto q : {dynamics_quantity::mass_matrix, dynamics_quantity::bias, dynamics_quantity::inverse,
@@ -52,7 +53,7 @@ dynamics_campaign campaign(const dynamics_library& library, const dynamics_optio
     const generators::robot_case rc = draw();
     dynamics_check check;
     try {
-      check = check_dynamics(library, rc.robot, state_of(rc));
+      check = checker(rc.robot, state_of(rc));
     } catch (const std::exception& e) {
       failed = true;
       c.note = e.what();
@@ -61,6 +62,7 @@ dynamics_campaign campaign(const dynamics_library& library, const dynamics_optio
     }
     if (!failed) {
       ++c.robots;
+      const auto joints = static_cast<std::size_t>(robots::validate(rc.robot).dofs);
       if (!check.refused.empty() && !c.refused++) c.first_refusal = check.refused;
       if (check.model_difference) {
         ++c.model_checked;
@@ -75,9 +77,12 @@ dynamics_campaign campaign(const dynamics_library& library, const dynamics_optio
           if (f.quantity == r.quantity) {
             ++f.checked;
             if (r.residual >= f.largest) f.largest = r.residual, f.budget = r.budget;
+            if (f.largest_by_joints.size() < joints) f.largest_by_joints.resize(joints, 0.0);
+            double& by = f.largest_by_joints[joints - 1];
+            by = std::max(by, r.residual);
           }
       if (opt.progress && c.robots % 25 == 0)
-        opt.progress(library.name + ": " + std::to_string(c.robots) + " of " + std::to_string(opt.robots) + " robots");
+        opt.progress(name + ": " + std::to_string(c.robots) + " of " + std::to_string(opt.robots) + " robots");
     }
     for (const auto& r : check.residuals)
       if (!r.within()) {
@@ -87,9 +92,9 @@ dynamics_campaign campaign(const dynamics_library& library, const dynamics_optio
         s << dynamics_quantity_name(r.quantity) << ": residual " << r.residual << " eps of its scale " << r.scale
           << " (budget " << r.budget << ")\n  q = " << vector_text(state_of(rc).q) << "\n  qdot = " << vector_text(state_of(rc).qdot)
           << "\n  qddot = " << vector_text(state_of(rc).qddot) << "\n  tau = " << vector_text(state_of(rc).tau)
-          << "\n  " << library.name << ": " << vector_text(r.library) << "\n  reference: " << vector_text(r.reference)
+          << "\n  " << name << ": " << vector_text(r.library) << "\n  reference: " << vector_text(r.reference)
           << "\n  seed " << opt.seed << ", " << opt.robots << " robots of at most " << opt.max_links
-          << " links (mechcheck-audit --dynamics " << library.name << " --robots " << opt.robots << " --seed " << opt.seed
+          << " links (mechcheck-audit --dynamics " << name << " --robots " << opt.robots << " --seed " << opt.seed
           << " finds and shrinks it again)";
         c.disagreement = s.str();
         c.counterexample_urdf = to_urdf(rc.robot);
@@ -105,21 +110,22 @@ dynamics_campaign campaign(const dynamics_library& library, const dynamics_optio
 }
 }  // namespace
 
-dynamics_campaign run_dynamics_campaign(const dynamics_library& library, const dynamics_options& opt) {
-  if (opt.robots < 1) throw domain_error("run_dynamics_campaign: robots must be >= 1, got " + std::to_string(opt.robots));
-  if (opt.max_links < 1 || opt.max_links > 32)
-    throw domain_error("run_dynamics_campaign: max_links must be in 1..32, got " + std::to_string(opt.max_links));
-  const int links = opt.max_links;
-  return campaign(library, opt, [links] { return *generators::robot_cases(links); });
-}
-
-dynamics_campaign run_dynamics_on(const dynamics_library& library, const robots::robot& robot, const dynamics_options& opt) {
-  if (opt.robots < 1) throw domain_error("run_dynamics_on: states must be >= 1, got " + std::to_string(opt.robots));
-  const robots::tree t = robots::validate(robot);
-  dynamics_campaign c = campaign(library, opt, [&] {
+dynamics_campaign run_dynamics_checker(const std::string& name, const std::string& origin, const dynamics_checker& check,
+                                       const dynamics_options& opt, const robots::robot* robot) {
+  if (opt.robots < 1)
+    throw domain_error("run_dynamics: " + std::string(robot ? "states" : "robots") + " must be >= 1, got " +
+                       std::to_string(opt.robots));
+  if (!robot) {
+    if (opt.max_links < 1 || opt.max_links > 32)
+      throw domain_error("run_dynamics: max_links must be in 1..32, got " + std::to_string(opt.max_links));
+    const int links = opt.max_links;
+    return campaign(name, origin, check, opt, [links] { return *generators::robot_cases(links); });
+  }
+  const robots::tree t = robots::validate(*robot);
+  dynamics_campaign c = campaign(name, origin, check, opt, [&] {
     generators::robot_case rc;
-    rc.robot = robot;
-    for (std::size_t j = 0; j < robot.joints.size(); ++j) {
+    rc.robot = *robot;
+    for (std::size_t j = 0; j < robot->joints.size(); ++j) {
       if (t.coordinate[j] < 0) continue;
       rc.q.push_back(*generators::dyadic_towards_zero(3.14));
       rc.qdot.push_back(*generators::dyadic_towards_zero(4));
@@ -130,6 +136,20 @@ dynamics_campaign run_dynamics_on(const dynamics_library& library, const robots:
   });
   c.max_links = t.dofs;
   return c;
+}
+
+namespace {
+dynamics_checker checker_of(const dynamics_library& library) {
+  return [&library](const robots::robot& r, const dynamics_state& x) { return check_dynamics(library, r, x); };
+}
+}  // namespace
+
+dynamics_campaign run_dynamics_campaign(const dynamics_library& library, const dynamics_options& opt) {
+  return run_dynamics_checker(library.name, library.origin, checker_of(library), opt);
+}
+
+dynamics_campaign run_dynamics_on(const dynamics_library& library, const robots::robot& robot, const dynamics_options& opt) {
+  return run_dynamics_checker(library.name, library.origin, checker_of(library), opt, &robot);
 }
 
 namespace {
@@ -195,7 +215,8 @@ std::vector<std::string> write_dynamics_report(const std::string& directory, con
     nlohmann::ordered_json fig = nlohmann::ordered_json::array();
     for (const auto& f : c.figures) {
       fig.push_back({{"quantity", dynamics_quantity_name(f.quantity)}, {"checked", f.checked}, {"largest", f.largest},
-                     {"budget", f.budget}, {"verdict", verdict_of(c, f)}});
+                     {"budget", f.budget}, {"largest_by_joints", f.largest_by_joints},
+                     {"verdict", verdict_of(c, f)}});
       md << "| " << c.library << " | " << dynamics_quantity_name(f.quantity) << " | " << f.checked << " | "
          << (f.checked ? sci(f.largest) : "-") << " | " << (f.checked ? sci(f.budget) : "-") << " | " << verdict_of(c, f) << " |\n";
     }
@@ -229,6 +250,34 @@ std::vector<std::string> write_dynamics_report(const std::string& directory, con
          << "Lagrangian); its exact mass matrix differs from the given robot's by up to " << sci(c.model_largest)
          << " eps of the scale (the robot where it is largest: the file held_robot.robot of dynamics.json).\n";
   md << after.str();
+  // Per quantity, each library's largest residual against the robots' moving joints, and
+  // the budget 16 n.
+  for (const auto q : {dynamics_quantity::mass_matrix, dynamics_quantity::bias, dynamics_quantity::inverse,
+                       dynamics_quantity::forward}) {
+    std::vector<plot_series> series;
+    std::size_t most = 0;
+    for (const auto& c : campaigns)
+      for (const auto& f : c.figures) {
+        if (f.quantity != q || f.checked == 0) continue;
+        plot_series s{c.library, {}};
+        for (std::size_t n = 1; n <= f.largest_by_joints.size(); ++n)
+          s.points.emplace_back(static_cast<double>(n), f.largest_by_joints[n - 1]);
+        most = std::max(most, f.largest_by_joints.size());
+        series.push_back(std::move(s));
+      }
+    if (series.empty()) continue;
+    plot_series budget{"budget 16 n", {}};
+    for (std::size_t n = 1; n <= most; ++n) budget.points.emplace_back(static_cast<double>(n), 16.0 * static_cast<double>(n));
+    series.push_back(std::move(budget));
+    std::string name = dynamics_quantity_name(q);
+    std::replace(name.begin(), name.end(), ' ', '-');
+    const std::string file = (fs::path(directory) / ("dynamics-" + name + ".svg")).string();
+    std::ofstream(file) << svg_loglog(std::string("Largest residual of the ") + dynamics_quantity_name(q) +
+                                          " against the robots' moving joints",
+                                      "moving joints n", "largest residual (eps of its scale)", series);
+    written.push_back(file);
+    md << "\n![" << dynamics_quantity_name(q) << "](" << fs::path(file).filename().string() << ")\n";
+  }
   const std::string json_file = (fs::path(directory) / "dynamics.json").string();
   std::ofstream(json_file) << j.dump(2) << "\n";
   const std::string md_file = (fs::path(directory) / "dynamics.md").string();

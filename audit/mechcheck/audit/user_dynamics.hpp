@@ -1,0 +1,178 @@
+#pragma once
+/// Equations of motion of one's own under audit (dynamics.hpp), in two forms:
+///
+///  - behind C calls (`c_dynamics`): the robot goes in as URDF text and its gravity, a handle
+///    comes out, and each quantity is a function that returns 0 or the library's status
+///    (C code cannot throw); judged in double like any dynamics_library;
+///  - templated on the scalar (`templated_dynamics<Model>`): Model<T> is built from the
+///    robot description and has any of the four quantities in T; judged in every tier
+///    (double, float128, mpfr50), each against the exact Lagrangian with its own epsilon.
+///
+/// The residual and its scale are dynamics.hpp's, in the tier's epsilon. The budget is
+/// 16 n, as for any library, and in mpfr50 16 n + 64 n: there the reference is computed in
+/// the tier itself, whose nested AD rounds at most 64 n eps on the same scale (the budget of
+/// the robots laws, properties/robots); in double and float128 it is mpfr50's, rounded once.
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "mechcheck/audit/dynamics.hpp"
+#include "mechcheck/audit/problems/urdf.hpp"
+#include "mechcheck/core.hpp"
+
+namespace mechcheck::audit {
+
+/// A dynamics library behind C calls. `load` gets the robot as URDF text (every number to
+/// 17 digits) and its gravity (URDF has none) and returns a handle, or null for a robot it
+/// cannot express, with the reason written into `why` (at most why_size bytes, terminated).
+/// Each quantity returns 0, or a status that is reported as the library's failure; a null
+/// function is a quantity not offered. Coordinates are the robot's (its moving joints in
+/// the file's order); M is written column-major, n x n.
+struct c_dynamics {
+  std::string name;    ///< e.g. "my_rnea"
+  std::string origin;  ///< where it comes from and what it computes
+  void* (*load)(const char* urdf, const double* gravity, char* why, int why_size) = nullptr;
+  void (*unload)(void* handle) = nullptr;
+  int (*mass_matrix)(void* handle, int n, const double* q, double* m) = nullptr;
+  int (*bias)(void* handle, int n, const double* q, const double* qdot, double* h) = nullptr;
+  int (*inverse)(void* handle, int n, const double* q, const double* qdot, const double* qddot, double* tau) = nullptr;
+  int (*forward)(void* handle, int n, const double* q, const double* qdot, const double* tau, double* qddot) = nullptr;
+};
+
+/// The C library as a dynamics_library (domain_error when `load` is null).
+dynamics_library c_dynamics_library(const c_dynamics& library);
+
+namespace detail {
+
+template <class T>
+dynamic_vector<T> in_tier(const Eigen::VectorXd& v) {
+  dynamic_vector<T> out(v.size());
+  for (Eigen::Index i = 0; i < v.size(); ++i) out(i) = T(v(i));
+  return out;
+}
+
+template <class T>
+Eigen::MatrixXd to_double(const dynamic_matrix<T>& m) {
+  Eigen::MatrixXd out(m.rows(), m.cols());
+  for (Eigen::Index i = 0; i < m.size(); ++i) out(i) = static_cast<double>(m(i));
+  return out;
+}
+
+/// One quantity in tier T: max |library - reference| / (eps(T) scale), the reference from
+/// mpfr50 converted to T once.
+template <class T>
+dynamics_residual tier_residual(dynamics_quantity quantity, const dynamic_matrix<T>& library,
+                                const dynamic_matrix<mpfr50>& reference, double scale, int links,
+                                const std::string& who) {
+  if (library.rows() != reference.rows() || library.cols() != reference.cols())
+    throw library_failure(who + ": its " + dynamics_quantity_name(quantity) + " is " + std::to_string(library.rows()) +
+                          "x" + std::to_string(library.cols()) + ", the robot's " + std::to_string(reference.rows()) +
+                          "x" + std::to_string(reference.cols()));
+  dynamics_residual r;
+  r.quantity = quantity;
+  r.library = to_double(library);
+  r.reference = to_double(reference);
+  r.scale = scale;
+  const double n = static_cast<double>(std::max(links, 1));
+  r.budget = std::is_same_v<T, mpfr50> ? 16.0 * n + 64.0 * n : 16.0 * n;
+  T largest = T(0);
+  using std::abs;
+  for (Eigen::Index i = 0; i < library.size(); ++i) {
+    if (!is_finite(library(i)))
+      throw non_finite_error(who + ": its " + dynamics_quantity_name(quantity) + " is not finite (entry " +
+                             std::to_string(i) + " = " + to_text(library(i)) + ")");
+    const T d = abs(T(library(i) - T(reference(i))));
+    if (d > largest) largest = d;
+  }
+  const double eps = static_cast<double>(tier_epsilon<T>());
+  const double d = static_cast<double>(largest);
+  r.residual = scale > 0 ? d / (eps * scale) : (d == 0 ? 0 : INFINITY);
+  return r;
+}
+
+template <class M, class T>
+concept offers_mass_matrix = requires(M& m, const dynamic_vector<T>& x) {
+  { m.mass_matrix(x) } -> std::convertible_to<dynamic_matrix<T>>;
+};
+template <class M, class T>
+concept offers_bias = requires(M& m, const dynamic_vector<T>& x) {
+  { m.bias(x, x) } -> std::convertible_to<dynamic_vector<T>>;
+};
+template <class M, class T>
+concept offers_inverse = requires(M& m, const dynamic_vector<T>& x) {
+  { m.inverse(x, x, x) } -> std::convertible_to<dynamic_vector<T>>;
+};
+template <class M, class T>
+concept offers_forward = requires(M& m, const dynamic_vector<T>& x) {
+  { m.forward(x, x, x) } -> std::convertible_to<dynamic_vector<T>>;
+};
+
+}  // namespace detail
+
+/// A library of one's own templated on the scalar: Model<T>(const robots::robot&) builds its
+/// model of the robot in T (throw robot_refused for a robot it cannot express) and offers
+/// any of
+///   dynamic_matrix<T> mass_matrix(const dynamic_vector<T>& q);
+///   dynamic_vector<T> bias(const dynamic_vector<T>& q, const dynamic_vector<T>& qdot);
+///   dynamic_vector<T> inverse(q, qdot, qddot);
+///   dynamic_vector<T> forward(q, qdot, tau);
+/// (found by their signatures; at least one). check<T> holds it in tier T to the exact
+/// Lagrangian at one robot and state.
+template <template <class> class Model>
+struct templated_dynamics {
+  std::string name, origin;
+
+  template <class T>
+  dynamics_check check(const robots::robot& robot, const dynamics_state& x) const {
+    static_assert(detail::offers_mass_matrix<Model<T>, T> || detail::offers_bias<Model<T>, T> ||
+                      detail::offers_inverse<Model<T>, T> || detail::offers_forward<Model<T>, T>,
+                  "templated_dynamics: Model<T> offers none of mass_matrix, bias, inverse, forward");
+    dynamics_check out;
+    std::optional<Model<T>> model;
+    try {
+      model.emplace(robot);
+    } catch (const robot_refused& e) {
+      out.refused = e.what();
+      return out;
+    }
+    const reference_terms e = reference_terms_at(robot, x);
+    const std::string who = name + " (" + std::string(tier_traits<T>::name) + ") on robot " + robot.name;
+    const dynamic_vector<T> q = detail::in_tier<T>(x.q), qdot = detail::in_tier<T>(x.qdot);
+    const int n = e.moving_links;
+    if constexpr (detail::offers_mass_matrix<Model<T>, T>)
+      out.residuals.push_back(detail::tier_residual<T>(dynamics_quantity::mass_matrix,
+                                                       dynamic_matrix<T>(model->mass_matrix(q)), e.mass, e.scale_m, n, who));
+    if constexpr (detail::offers_bias<Model<T>, T>)
+      out.residuals.push_back(detail::tier_residual<T>(dynamics_quantity::bias, dynamic_matrix<T>(model->bias(q, qdot)),
+                                                       dynamic_matrix<mpfr50>(e.bias), e.scale_h, n, who));
+    if constexpr (detail::offers_inverse<Model<T>, T>)
+      out.residuals.push_back(detail::tier_residual<T>(
+          dynamics_quantity::inverse, dynamic_matrix<T>(model->inverse(q, qdot, detail::in_tier<T>(x.qddot))),
+          dynamic_matrix<mpfr50>(e.tau), e.scale_tau, n, who));
+    if constexpr (detail::offers_forward<Model<T>, T>)
+      out.residuals.push_back(detail::tier_residual<T>(
+          dynamics_quantity::forward, dynamic_matrix<T>(model->forward(q, qdot, detail::in_tier<T>(x.tau))),
+          dynamic_matrix<mpfr50>(e.qddot), e.scale_forward, n, who));
+    return out;
+  }
+
+  /// The campaign in tier T: random robots (robot null) or the given robot at random states.
+  template <class T>
+  dynamics_campaign run(const dynamics_options& options, const robots::robot* robot = nullptr) const {
+    const dynamics_checker check = [this](const robots::robot& r, const dynamics_state& x) { return this->template check<T>(r, x); };
+    return run_dynamics_checker(name + " (" + std::string(tier_traits<T>::name) + ")", origin, check, options, robot);
+  }
+
+  /// The campaign in every tier: double, float128, mpfr50 (the same robots and states: one
+  /// seed).
+  std::vector<dynamics_campaign> run_every_tier(const dynamics_options& options,
+                                                const robots::robot* robot = nullptr) const {
+    return {run<double>(options, robot), run<float128>(options, robot), run<mpfr50>(options, robot)};
+  }
+};
+
+}  // namespace mechcheck::audit

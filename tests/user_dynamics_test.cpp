@@ -1,0 +1,184 @@
+// Equations of motion of one's own (user_dynamics.hpp): a templated library judged in every
+// tier, so that one computing in double is caught in float128 and mpfr50; a dropped
+// centrifugal term caught in each; a C library's statuses, refusals and sizes as typed
+// errors.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "mechcheck/audit/user_dynamics.hpp"
+
+namespace user_dynamics_test {
+using namespace mechcheck;
+namespace rb = mechcheck::robots;
+namespace audit = mechcheck::audit;
+
+/// A planar arm about z, hanging in gravity along -y: the elbow at (l1, 0, 0), the centres
+/// of mass at (c, 0, 0) of their links.
+rb::robot planar_arm() {
+  rb::robot r;
+  r.name = "planar_arm";
+  r.gravity = {0, -9.81, 0};
+  rb::inertial upper;
+  upper.mass = 2;
+  upper.origin.xyz = {0.5, 0, 0};
+  upper.inertia = Eigen::Vector3d(0.125, 0.25, 0.25).asDiagonal();
+  rb::inertial fore = upper;
+  fore.mass = 1.5;
+  fore.origin.xyz = {0.375, 0, 0};
+  fore.inertia = Eigen::Vector3d(0.03125, 0.0625, 0.0625).asDiagonal();
+  r.links = {{"base", std::nullopt}, {"upper", upper}, {"fore", fore}};
+  rb::joint shoulder;
+  shoulder.name = "shoulder";
+  shoulder.parent = "base";
+  shoulder.child = "upper";
+  shoulder.axis = {0, 0, 1};
+  rb::joint elbow = shoulder;
+  elbow.name = "elbow";
+  elbow.parent = "upper";
+  elbow.child = "fore";
+  elbow.origin.xyz = {1, 0, 0};
+  r.joints = {shoulder, elbow};
+  return r;
+}
+
+enum class variant { right, in_double, no_centrifugal };
+
+/// The arm's closed form (angles about +z from +x), in S; `v` makes it wrong.
+template <class T, variant v>
+struct arm {
+  double m1, m2, l1, c1, c2, i1, i2, g;
+  explicit arm(const rb::robot& r)
+      : m1(r.links[1].body->mass), m2(r.links[2].body->mass), l1(r.joints[1].origin.xyz(0)),
+        c1(r.links[1].body->origin.xyz(0)), c2(r.links[2].body->origin.xyz(0)), i1(r.links[1].body->inertia(2, 2)),
+        i2(r.links[2].body->inertia(2, 2)), g(-r.gravity(1)) {
+    if (r.joints.size() != 2) throw audit::robot_refused("arm: not two joints");
+  }
+  template <class S>
+  dynamic_matrix<S> mass(const dynamic_vector<S>& q) const {
+    using std::cos;
+    const S k = S(m2) * S(l1) * S(c2) * cos(q(1));
+    dynamic_matrix<S> m(2, 2);
+    m(0, 0) = S(i1) + S(i2) + S(m1) * S(c1) * S(c1) + S(m2) * (S(l1) * S(l1) + S(c2) * S(c2)) + 2 * k;
+    m(0, 1) = m(1, 0) = S(i2) + S(m2) * S(c2) * S(c2) + k;
+    m(1, 1) = S(i2) + S(m2) * S(c2) * S(c2);
+    return m;
+  }
+  template <class S>
+  dynamic_vector<S> forces(const dynamic_vector<S>& q, const dynamic_vector<S>& qdot) const {
+    using std::cos;
+    using std::sin;
+    const S s = S(m2) * S(l1) * S(c2) * sin(q(1)), outer = S(g) * S(m2) * S(c2) * cos(S(q(0) + q(1)));
+    const S centrifugal = v == variant::no_centrifugal ? S(0) : S(qdot(1) * qdot(1));
+    dynamic_vector<S> h(2);
+    h(0) = -s * (2 * qdot(0) * qdot(1) + centrifugal) + S(g) * (S(m1) * S(c1) + S(m2) * S(l1)) * cos(q(0)) + outer;
+    h(1) = s * qdot(0) * qdot(0) + outer;
+    return h;
+  }
+  dynamic_matrix<T> mass_matrix(const dynamic_vector<T>& q) const {
+    if constexpr (v == variant::in_double) return mass<double>(q.template cast<double>()).template cast<T>();
+    else return mass<T>(q);
+  }
+  dynamic_vector<T> bias(const dynamic_vector<T>& q, const dynamic_vector<T>& qdot) const {
+    if constexpr (v == variant::in_double)
+      return forces<double>(q.template cast<double>(), qdot.template cast<double>()).template cast<T>();
+    else return forces<T>(q, qdot);
+  }
+};
+template <class T>
+using right_arm = arm<T, variant::right>;
+template <class T>
+using arm_in_double = arm<T, variant::in_double>;
+template <class T>
+using arm_without_centrifugal = arm<T, variant::no_centrifugal>;
+
+audit::dynamics_options states(int n) {
+  audit::dynamics_options o;
+  o.robots = n;
+  o.seed = 7;
+  return o;
+}
+
+bool all_within(const audit::dynamics_campaign& c) { return c.agrees() && c.refused == 0; }
+
+TEST(user_dynamics, a_templated_library_is_judged_in_every_tier) {
+  const rb::robot r = planar_arm();
+  const audit::templated_dynamics<right_arm> right{"arm", "closed form"};
+  for (const auto& c : right.run_every_tier(states(10), &r)) {
+    EXPECT_TRUE(all_within(c)) << c.library << ": " << c.disagreement << c.note;
+    for (const auto& f : c.figures)
+      if (f.quantity == audit::dynamics_quantity::mass_matrix || f.quantity == audit::dynamics_quantity::bias)
+        EXPECT_EQ(f.checked, 10) << c.library;
+  }
+  // Computing in double and converting: within in double, caught in float128 and mpfr50 (an
+  // error of 2^-53 is 2^60 eps of float128).
+  const auto in_double = audit::templated_dynamics<arm_in_double>{"arm_in_double", "double inside"}.run_every_tier(
+      states(10), &r);
+  ASSERT_EQ(in_double.size(), 3u);
+  EXPECT_TRUE(all_within(in_double[0])) << in_double[0].disagreement;
+  EXPECT_FALSE(in_double[1].agrees());
+  EXPECT_FALSE(in_double[2].agrees());
+  // A dropped centrifugal term is caught in every tier, shrunk to a state with qdot_2 != 0.
+  for (const auto& c : audit::templated_dynamics<arm_without_centrifugal>{"arm_no_centrifugal", "wrong"}.run_every_tier(
+           states(10), &r)) {
+    EXPECT_FALSE(c.agrees()) << c.library;
+    EXPECT_NE(c.disagreement.find("bias forces"), std::string::npos) << c.disagreement;
+  }
+}
+
+// A C library: the arm in double behind C calls, with a status to return.
+int status_to_return = 0;
+void* c_load(const char* urdf, const double* gravity, char* why, int why_size) {
+  if (std::strstr(urdf, "planar_arm") == nullptr) {
+    std::snprintf(why, std::size_t(why_size), "only the planar arm");
+    return nullptr;
+  }
+  rb::robot r = planar_arm();
+  r.gravity = Eigen::Vector3d(gravity[0], gravity[1], gravity[2]);
+  return new right_arm<double>(r);
+}
+void c_unload(void* h) { delete static_cast<right_arm<double>*>(h); }
+int c_mass(void* h, int n, const double* q, double* m) {
+  if (status_to_return) return status_to_return;
+  Eigen::Map<Eigen::MatrixXd>(m, n, n) = static_cast<right_arm<double>*>(h)->mass_matrix(Eigen::Map<const Eigen::VectorXd>(q, n));
+  return 0;
+}
+
+TEST(user_dynamics, a_c_library_is_judged_and_its_statuses_and_refusals_are_typed) {
+  audit::c_dynamics c;
+  c.name = "c_arm";
+  c.load = &c_load;
+  c.unload = &c_unload;
+  c.mass_matrix = &c_mass;
+  const audit::dynamics_library library = audit::c_dynamics_library(c);
+  audit::dynamics_state x;
+  x.q = Eigen::Vector2d(0.3, -0.7);
+  x.qdot = Eigen::Vector2d(1.1, 0.4);
+  x.qddot = Eigen::Vector2d(-0.5, 2.0);
+  x.tau = Eigen::Vector2d(3.0, -1.0);
+  const audit::dynamics_check ok = audit::check_dynamics(library, planar_arm(), x);
+  ASSERT_EQ(ok.residuals.size(), 1u);  // the mass matrix only: the other functions are null
+  EXPECT_TRUE(ok.residuals[0].within()) << ok.residuals[0].residual;
+  rb::robot other = planar_arm();
+  other.name = "another";
+  const audit::dynamics_check refused = audit::check_dynamics(library, other, x);
+  EXPECT_NE(refused.refused.find("c_arm refused robot another: only the planar arm"), std::string::npos)
+      << refused.refused;
+  status_to_return = 3;
+  try {
+    audit::check_dynamics(library, planar_arm(), x);
+    ADD_FAILURE() << "a status was not reported";
+  } catch (const audit::library_failure& e) {
+    const std::string want = "c_arm: mass_matrix returned status 3 at q = (0.29999999999999999, -0.69999999999999996)";
+    EXPECT_NE(std::string(e.what()).find(want), std::string::npos) << e.what();
+  }
+  status_to_return = 0;
+  audit::c_dynamics no_load = c;
+  no_load.load = nullptr;
+  EXPECT_THROW(audit::c_dynamics_library(no_load), domain_error);
+}
+
+}  // namespace user_dynamics_test
