@@ -77,6 +77,7 @@ dynamics_campaign campaign(const std::string& name, const std::string& origin, c
           if (f.quantity == r.quantity) {
             ++f.checked;
             if (r.residual >= f.largest) f.largest = r.residual, f.budget = r.budget;
+            if (joints == 0) continue;  // a robot without a moving joint: nothing to plot
             if (f.largest_by_joints.size() < joints) f.largest_by_joints.resize(joints, 0.0);
             double& by = f.largest_by_joints[joints - 1];
             by = std::max(by, r.residual);
