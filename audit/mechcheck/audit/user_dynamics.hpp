@@ -13,10 +13,14 @@
 /// the tier itself, whose nested AD rounds at most 64 n eps on the same scale (the budget of
 /// the robots laws, properties/robots); in double and float128 it is mpfr50's, rounded once.
 
+#include <algorithm>
+#include <cmath>
+#include <concepts>
 #include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
