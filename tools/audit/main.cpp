@@ -1,7 +1,8 @@
 // mechcheck-audit: audits one-step integrators (the library's, Boost.Odeint's, third-party
 // libraries', tableau files', a child process's), adaptive drivers and physics engines
-// against what they declare; prints a table and writes JSON, Markdown and SVG plots into the
-// directory -o names.
+// against what they declare, and dynamics libraries' equations of motion against the exact
+// Lagrangian; prints a table and writes JSON, Markdown and SVG plots into the directory -o
+// names.
 //
 // Exit status: 0 when everything asked for was audited; 1 when an input was refused (a bad
 // option, a tableau file that cannot be read, a child that cannot be started: the others are
@@ -135,7 +136,8 @@ int main(int argc, char** argv) {
                "physics engines, against what they declare"};
   app.footer("Exit status: 0 all audited; 1 an input refused (the others are still audited and written); "
              "2 a claim --require names is contradicted (a stepper's or engine integrator's measured claim, or "
-             "a tableau file's algebraic one: order, embedding order, stage order, symplectic, symmetric); "
+             "a tableau file's algebraic one: order, embedding order, stage order, symplectic, symmetric), or a "
+             "dynamics library's quantity disagrees with the Lagrangian; "
              "2 also when a target --require-measured names measured nothing of a problem or scenario it was "
              "audited on (refused, skipped, or every run failed); "
              "3 a child failed during the audit.\n"
@@ -175,7 +177,7 @@ int main(int argc, char** argv) {
   app.add_option("--require", require,
                  "exit with status 2 when a claim of a stepper or engine integrator matching this pattern is "
                  "contradicted, a tableau file's algebraic claims included (tableau::<name>; e.g. 'mechcheck::*'; "
-                 "'*' for all)");
+                 "'*' for all), or when a dynamics library matching it disagrees with the Lagrangian");
   app.add_option("--require-measured", require_measured,
                  "exit with status 2 when a stepper, adaptive driver or engine integrator matching this pattern "
                  "measured nothing of a problem or scenario it was audited on (it refused or skipped it, or every "
@@ -222,7 +224,7 @@ int main(int argc, char** argv) {
   long long engine_long_run_steps = 100000;
   app.add_option("--engine-long-run-steps", engine_long_run_steps, "steps of the engines' long run (0: none)")
       ->check(CLI::Range(0LL, 100000000LL));
-  bool exec_stepper = false, exec_driver = false, exec_engine = false;
+  bool exec_stepper = false, exec_driver = false, exec_engine = false, exec_dynamics = false;
   double exec_timeout = 30;
   app.add_flag("--exec-driver", exec_driver,
                "audit the adaptive driver a child program serves (docs/protocol.md): the command follows \"--\"");
@@ -232,6 +234,9 @@ int main(int argc, char** argv) {
   app.add_flag("--exec-engine", exec_engine,
                "audit the physics engine's integrators a child program serves (docs/protocol.md) on the "
                "scenarios: the command follows \"--\"");
+  app.add_flag("--exec-dynamics", exec_dynamics,
+               "audit the equations of motion a child program computes (docs/protocol.md) on random robots "
+               "(--robots, --seed) or --urdf robots: the command follows \"--\"");
   app.add_option("--exec-timeout", exec_timeout, "seconds a child may take to reply (default 30)")
       ->check(CLI::Range(1e-3, 1e6));
   CLI11_PARSE(app, argc, argv);
@@ -245,14 +250,15 @@ int main(int argc, char** argv) {
     std::cerr << "mechcheck-audit: " << e.what() << "\n";
     return 1;
   }
-  if (int(exec_stepper) + int(exec_driver) + int(exec_engine) > 1) {
-    std::cerr << "mechcheck-audit: --exec-stepper, --exec-driver and --exec-engine: one child a command\n";
+  if (int(exec_stepper) + int(exec_driver) + int(exec_engine) + int(exec_dynamics) > 1) {
+    std::cerr << "mechcheck-audit: --exec-stepper, --exec-driver, --exec-engine and --exec-dynamics: one child a command\n";
     return 1;
   }
-  if ((exec_stepper || exec_driver || exec_engine) != !child_command.empty()) {
+  if ((exec_stepper || exec_driver || exec_engine || exec_dynamics) != !child_command.empty()) {
     std::cerr << "mechcheck-audit: "
-              << (child_command.empty() ? "--exec-stepper, --exec-driver and --exec-engine need the child's command after \"--\""
-                                        : "a command after \"--\" needs --exec-stepper, --exec-driver or --exec-engine")
+              << (child_command.empty()
+                      ? "--exec-stepper, --exec-driver, --exec-engine and --exec-dynamics need the child's command after \"--\""
+                      : "a command after \"--\" needs --exec-stepper, --exec-driver, --exec-engine or --exec-dynamics")
               << "\n";
     return 1;
   }
@@ -310,6 +316,7 @@ int main(int argc, char** argv) {
   std::vector<audit::exec_target> exec_targets;
   std::vector<audit::exec_driver_target> exec_drivers;
   std::vector<audit::exec_engine_target> exec_engines;
+  std::vector<audit::exec_dynamics_target> exec_libraries;
   audit::exec_options eo;
   eo.timeout = exec_timeout;
   bool child_refused = false;
@@ -318,6 +325,7 @@ int main(int argc, char** argv) {
       if (exec_driver) exec_drivers.push_back(audit::exec_driver(child_command, eo));
       if (exec_stepper) exec_targets.push_back(audit::exec_stepper(child_command, eo));
       if (exec_engine) exec_engines.push_back(audit::exec_engine(child_command, eo));
+      if (exec_dynamics) exec_libraries.push_back(audit::exec_dynamics(child_command, eo));
     } catch (const error& e) {
       std::cerr << "mechcheck-audit: " << e.what() << "\n";
       child_refused = true;
@@ -327,6 +335,7 @@ int main(int argc, char** argv) {
     if (exec_driver) driver_patterns.push_back("exec::*");
     if (exec_stepper) request.patterns.push_back("exec::*");
     if (exec_engine && engine_patterns.empty()) engine_patterns.push_back("exec::*");
+    if (exec_dynamics && dynamics_patterns.empty()) dynamics_patterns.push_back("exec::*");
     if (exec_stepper && std::find(tiers.begin(), tiers.end(), "double") == tiers.end()) {
       std::cerr << "mechcheck-audit: --exec-stepper runs in double; -t mpfr50 alone has nothing to run\n";
       return 1;
@@ -403,7 +412,11 @@ int main(int argc, char** argv) {
     }
     std::vector<std::string> everything = all_steppers;
     for (const auto& n : names_of(all_engines)) everything.push_back(n);
-    if (!child_refused) ok = every_pattern_matches("--require", "stepper or engine integrator", require, everything) && ok;
+    std::vector<std::string> required = everything;  // --require: the dynamics libraries too
+    for (const auto& n : names_of(audit::dynamics_found())) required.push_back(n);
+    for (const auto& t : exec_libraries) required.push_back(t.library.name);
+    if (!child_refused)
+      ok = every_pattern_matches("--require", "stepper, engine integrator or dynamics library", require, required) && ok;
     for (const auto& n : names_of(all_drivers)) everything.push_back(n);
     if (!child_refused)
       ok = every_pattern_matches("--require-measured", "stepper, adaptive driver or engine integrator", require_measured,
@@ -412,12 +425,14 @@ int main(int argc, char** argv) {
   }
   if (child_refused && steppers.empty() && tableau_files.empty() &&
       std::all_of(driver_patterns.begin(), driver_patterns.end(), [](const std::string& p) { return p == "exec::*"; }) &&
-      std::all_of(engine_patterns.begin(), engine_patterns.end(), [](const std::string& p) { return p == "exec::*"; }))
+      std::all_of(engine_patterns.begin(), engine_patterns.end(), [](const std::string& p) { return p == "exec::*"; }) &&
+      std::all_of(dynamics_patterns.begin(), dynamics_patterns.end(), [](const std::string& p) { return p == "exec::*"; }))
     return status;  // the child was all there was to audit
 
   // The equations of motion.
   if (!dynamics_patterns.empty()) {
     std::vector<audit::dynamics_library> libraries = audit::dynamics_found();
+    for (const auto& t : exec_libraries) libraries.push_back(t.library);
     std::erase_if(libraries, [&](const audit::dynamics_library& l) { return !audit_tool::matches(dynamics_patterns, l.name); });
     if (libraries.empty()) {
       std::cerr << "mechcheck-audit: --dynamics matches no dynamics library of this build\n";
@@ -448,6 +463,12 @@ int main(int argc, char** argv) {
       if (!c.agrees() && audit_tool::matches_any(require, c.library)) {
         std::cerr << "mechcheck-audit: " << c.library << ": a quantity disagrees with the Lagrangian (see the table)\n";
         raise(2);
+      }
+    for (const auto& t : exec_libraries)
+      if (t.failures() > 0) {
+        std::cerr << "mechcheck-audit: " << t.library.name << ": " << t.failures() << " children failed; the last: "
+                  << t.last_failure() << "\n";
+        raise(3);
       }
     if (steppers.empty() && tableau_files.empty() && driver_patterns.empty() && engine_patterns.empty() &&
         exec_targets.empty())

@@ -75,6 +75,9 @@ struct dynamics_library {
   std::string name;    ///< e.g. "kdl"
   std::string origin;  ///< its functions and version, and what the adapter does for it
   std::function<std::unique_ptr<dynamics_model>(const robots::robot&)> load;
+  /// The command's arguments that audit it again, for a disagreement's message ("--dynamics
+  /// NAME" when empty; a child's: "--exec-dynamics -- COMMAND").
+  std::string selector;
 };
 
 /// A library's order of the robot's coordinates, for its adapter: order[i] is the robot's
@@ -197,9 +200,10 @@ dynamics_campaign run_dynamics_on(const dynamics_library& library, const robots:
                                   const dynamics_options& options);
 
 /// The same two, for a target named `name` checked by `check` (a library in another tier:
-/// user_dynamics.hpp). `robot` null: random robots.
+/// user_dynamics.hpp). `robot` null: random robots. `selector` as dynamics_library's.
 dynamics_campaign run_dynamics_checker(const std::string& name, const std::string& origin, const dynamics_checker& check,
-                                       const dynamics_options& options, const robots::robot* robot = nullptr);
+                                       const dynamics_options& options, const robots::robot* robot = nullptr,
+                                       const std::string& selector = "");
 
 /// The campaigns as a console table, JSON and Markdown (written into `directory`, with each
 /// counterexample as a URDF file, and per quantity an SVG of each library's largest residual

@@ -1,5 +1,6 @@
 // The dynamics audit over random robots, shrunk by RapidCheck, and its report (dynamics.hpp).
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -39,7 +40,8 @@ std::string vector_text(const Eigen::MatrixXd& m) {
 /// The campaign's property over cases drawn by `draw`: figures recorded until the first
 /// disagreement (then RapidCheck shrinks it, and the last failing case is the minimal one).
 dynamics_campaign campaign(const std::string& name, const std::string& origin, const dynamics_checker& checker,
-                           const dynamics_options& opt, const std::function<generators::robot_case()>& draw) {
+                           const dynamics_options& opt, const std::function<generators::robot_case()>& draw,
+                           const std::string& selector) {
   dynamics_campaign c;
   c.library = name;
   c.origin = origin;
@@ -95,8 +97,8 @@ dynamics_campaign campaign(const std::string& name, const std::string& origin, c
           << "\n  qddot = " << vector_text(state_of(rc).qddot) << "\n  tau = " << vector_text(state_of(rc).tau)
           << "\n  " << name << ": " << vector_text(r.library) << "\n  reference: " << vector_text(r.reference)
           << "\n  seed " << opt.seed << ", " << opt.robots << " robots of at most " << opt.max_links
-          << " links (mechcheck-audit --dynamics " << name << " --robots " << opt.robots << " --seed " << opt.seed
-          << " finds and shrinks it again)";
+          << " links (mechcheck-audit --robots " << opt.robots << " --seed " << opt.seed << " "
+          << (selector.empty() ? "--dynamics " + name : selector) << " finds and shrinks it again)";
         c.disagreement = s.str();
         c.counterexample_urdf = to_urdf(rc.robot);
         RC_FAIL(c.disagreement);
@@ -112,7 +114,8 @@ dynamics_campaign campaign(const std::string& name, const std::string& origin, c
 }  // namespace
 
 dynamics_campaign run_dynamics_checker(const std::string& name, const std::string& origin, const dynamics_checker& check,
-                                       const dynamics_options& opt, const robots::robot* robot) {
+                                       const dynamics_options& opt, const robots::robot* robot,
+                                       const std::string& selector) {
   if (opt.robots < 1)
     throw domain_error("run_dynamics: " + std::string(robot ? "states" : "robots") + " must be >= 1, got " +
                        std::to_string(opt.robots));
@@ -120,7 +123,7 @@ dynamics_campaign run_dynamics_checker(const std::string& name, const std::strin
     if (opt.max_links < 1 || opt.max_links > 32)
       throw domain_error("run_dynamics: max_links must be in 1..32, got " + std::to_string(opt.max_links));
     const int links = opt.max_links;
-    return campaign(name, origin, check, opt, [links] { return *generators::robot_cases(links); });
+    return campaign(name, origin, check, opt, [links] { return *generators::robot_cases(links); }, selector);
   }
   const robots::tree t = robots::validate(*robot);
   dynamics_campaign c = campaign(name, origin, check, opt, [&] {
@@ -134,7 +137,7 @@ dynamics_campaign run_dynamics_checker(const std::string& name, const std::strin
       rc.tau.push_back(*generators::dyadic_towards_zero(4));
     }
     return rc;
-  });
+  }, selector);
   c.max_links = t.dofs;
   return c;
 }
@@ -146,11 +149,11 @@ dynamics_checker checker_of(const dynamics_library& library) {
 }  // namespace
 
 dynamics_campaign run_dynamics_campaign(const dynamics_library& library, const dynamics_options& opt) {
-  return run_dynamics_checker(library.name, library.origin, checker_of(library), opt);
+  return run_dynamics_checker(library.name, library.origin, checker_of(library), opt, nullptr, library.selector);
 }
 
 dynamics_campaign run_dynamics_on(const dynamics_library& library, const robots::robot& robot, const dynamics_options& opt) {
-  return run_dynamics_checker(library.name, library.origin, checker_of(library), opt, &robot);
+  return run_dynamics_checker(library.name, library.origin, checker_of(library), opt, &robot, library.selector);
 }
 
 namespace {
@@ -208,8 +211,13 @@ std::vector<std::string> write_dynamics_report(const std::string& directory, con
         "(docs/audit.md, \"Equations of motion\").\n\n"
      << "| library | quantity | robots | largest residual | budget | verdict |\n|---|---|---:|---:|---:|---|\n";
   for (const auto& c : campaigns) {
-    std::string stem = c.library;  // "kdl on arm": a file name without spaces
-    std::replace(stem.begin(), stem.end(), ' ', '-');
+    // "kdl on arm", "exec::sympy_lagrange": a file name of letters, digits, '-', '_' and '.'.
+    std::string stem;
+    for (const char ch : c.library) {
+      const bool plain = std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '.' || ch == '-';
+      if (plain) stem += ch;
+      else if (stem.empty() || stem.back() != '-') stem += '-';
+    }
     nlohmann::ordered_json e = {{"library", c.library}, {"origin", c.origin}, {"seed", c.seed}, {"robots", c.robots},
                                 {"refused", c.refused}, {"max_links", c.max_links}};
     if (c.refused) e["first_refusal"] = c.first_refusal;

@@ -1,6 +1,7 @@
 #pragma once
-/// Steppers, drivers and engines in another process: a child program, in any language, serves
-/// a stepper (or an adaptive driver, or a physics engine's integrators) over its
+/// Steppers, drivers, engines and dynamics libraries in another process: a child program, in
+/// any language, serves a stepper (or an adaptive driver, a physics engine's integrators, a
+/// robot's equations of motion) over its
 /// standard input and output by the protocol of docs/protocol.md (one JSON object a line,
 /// numbers exact), and the audit runs it as a black box (black_box.hpp): the child asks the
 /// parent for the problem's right-hand side and Jacobian while it takes a step.
@@ -24,6 +25,7 @@
 
 #include "mechcheck/audit/black_box.hpp"
 #include "mechcheck/audit/drivers.hpp"
+#include "mechcheck/audit/dynamics.hpp"
 #include "mechcheck/audit/engines.hpp"
 
 namespace mechcheck::audit {
@@ -84,6 +86,20 @@ struct exec_engine_target {
 /// Throws as exec_stepper does.
 exec_engine_target exec_engine(const std::vector<std::string>& command, const exec_options& options = {});
 
+/// A dynamics library a child serves (its handshake's kind "dynamics"): a dynamics_library
+/// named exec::<the handshake's name>, audited like the others (run_dynamics_campaign). Each
+/// robot is a "load" (its URDF text and gravity; the child may refuse it), the quantities
+/// the handshake lists asked at states, an "unload". A child that fails is replaced, and the
+/// models loaded into it are loaded again into the next.
+struct exec_dynamics_target {
+  dynamics_library library;
+  std::function<int()> failures;
+  std::function<std::string()> last_failure;
+};
+
+/// Throws as exec_stepper does.
+exec_dynamics_target exec_dynamics(const std::vector<std::string>& command, const exec_options& options = {});
+
 /// The command as one line of text (arguments quoted where they need it), for messages.
 std::string command_text(const std::vector<std::string>& command);
 
@@ -123,6 +139,7 @@ struct handshake_fields {
   bool decimal = false;  ///< "numbers": "decimal": the parent writes 17 significant digits
   bool shapes = false;   ///< an engine that answers "shape" requests
   std::vector<integrator_fields> integrators;  ///< kind "engine"
+  std::vector<dynamics_quantity> quantities;   ///< kind "dynamics": those it computes
 };
 handshake_fields parse_handshake(std::string_view line, std::string_view kind);
 

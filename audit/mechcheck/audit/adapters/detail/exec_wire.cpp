@@ -142,7 +142,20 @@ void only_known_fields(const json& object, std::initializer_list<const char*> kn
   for (auto field = object.begin(); field != object.end(); ++field)
     if (!known_field(field.key(), known)) unknown_field(field.key(), known, what);
 }
+const char* quantity_op(dynamics_quantity q) {
+  switch (q) {
+    case dynamics_quantity::mass_matrix: return "mass_matrix";
+    case dynamics_quantity::bias: return "bias";
+    case dynamics_quantity::inverse: return "inverse";
+    case dynamics_quantity::forward: return "forward";
+  }
+  return "?";
+}
+
 namespace {
+constexpr dynamics_quantity all_quantities[] = {dynamics_quantity::mass_matrix, dynamics_quantity::bias,
+                                                dynamics_quantity::inverse, dynamics_quantity::forward};
+
 /// The claims of a handshake or of one of its integrators.
 claims claims_of(const json& object, const std::string& what) {
   claims out;
@@ -183,6 +196,8 @@ exec_protocol::handshake_fields handshake_of(const json& h, std::string_view kin
     only_known_fields(h, {"protocol", "version", "kind", "name", "origin", "claims", "structure", "numbers", "shapes",
                           "integrators"},
                       what);
+  else if (kind == "dynamics")
+    only_known_fields(h, {"protocol", "version", "kind", "name", "origin", "numbers", "quantities"}, what);
   else
     only_known_fields(h, {"protocol", "version", "kind", "name", "origin", "claims", "structure", "numbers"}, what);
   exec_protocol::handshake_fields out;
@@ -221,6 +236,22 @@ exec_protocol::handshake_fields handshake_of(const json& h, std::string_view kin
       for (const auto& g : out.integrators)
         if (g.name == f.name) throw exec_error(what + ": integrator \"" + f.name + "\" is listed twice");
       out.integrators.push_back(std::move(f));
+    }
+  }
+  if (kind == "dynamics") {
+    const auto it = h.find("quantities");
+    if (it == h.end() || !it->is_array() || it->empty() || it->size() > 4)
+      throw exec_error(what + ": a dynamics library's handshake lists its \"quantities\" (1 to 4 of \"mass_matrix\", "
+                       "\"bias\", \"inverse\", \"forward\")");
+    for (const json& q : *it) {
+      const auto named = std::find_if(std::begin(all_quantities), std::end(all_quantities),
+                                      [&](dynamics_quantity d) { return q == quantity_op(d); });
+      if (named == std::end(all_quantities))
+        throw exec_error(what + ": quantity " + excerpt_json(q) + " is not one of \"mass_matrix\", \"bias\", " +
+                         "\"inverse\", \"forward\"");
+      if (std::find(out.quantities.begin(), out.quantities.end(), *named) != out.quantities.end())
+        throw exec_error(what + ": quantity " + excerpt_json(q) + " is listed twice");
+      out.quantities.push_back(*named);
     }
   }
   return out;

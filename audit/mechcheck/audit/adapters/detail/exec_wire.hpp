@@ -52,8 +52,12 @@ std::string name_of(const json& object, const char* key, const std::string& what
 bool known_field(std::string_view key, std::initializer_list<const char*> known);
 void only_known_fields(const json& object, std::initializer_list<const char*> known, const std::string& what);
 
-/// A handshake of `kind` ("stepper", "driver" or "engine").
+/// A handshake of `kind` ("stepper", "driver", "engine" or "dynamics").
 exec_protocol::handshake_fields handshake_of(const json& h, std::string_view kind);
+
+/// A dynamics quantity's name on the wire: its request's "op" ("mass_matrix", "bias",
+/// "inverse", "forward").
+const char* quantity_op(dynamics_quantity q);
 
 /// An error reply's text.
 std::string error_text(const json& e);

@@ -1,0 +1,161 @@
+// The exec protocol's dynamics libraries (docs/protocol.md): a robot loaded as URDF text and
+// its gravity, each quantity asked at a state, the model unloaded; a model loaded again into
+// the child that replaces one that failed.
+#include <algorithm>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mechcheck/audit/adapters/detail/exec_child.hpp"
+#include "mechcheck/audit/adapters/exec.hpp"
+#include "mechcheck/audit/problems/urdf.hpp"
+
+namespace mechcheck::audit {
+
+namespace {
+using namespace exec_detail;
+
+std::string vector_text(const Eigen::VectorXd& v) {
+  std::string out;
+  for (Eigen::Index i = 0; i < v.size(); ++i) out += (i ? ", " : "") + to_text(v(i));
+  return "(" + out + ")";
+}
+
+/// The reply field of each quantity and its count of numbers for n coordinates.
+const char* reply_field(dynamics_quantity q) {
+  switch (q) {
+    case dynamics_quantity::mass_matrix: return "m";
+    case dynamics_quantity::bias: return "h";
+    case dynamics_quantity::inverse: return "tau";
+    case dynamics_quantity::forward: return "qddot";
+  }
+  return "?";
+}
+
+class exec_dynamics_model final : public dynamics_model {
+ public:
+  exec_dynamics_model(std::shared_ptr<session> s, std::vector<dynamics_quantity> offered, const robots::robot& robot)
+      : s_(std::move(s)),
+        offered_(std::move(offered)),
+        urdf_(to_urdf(robot)),
+        gravity_(robot.gravity),
+        robot_(robot.name),
+        n_(robots::validate(robot).dofs) {
+    load();
+  }
+  ~exec_dynamics_model() override {
+    if (!loaded_into_live()) return;
+    try {
+      exchange(*s_, {{"op", "unload"}, {"model", id_}}, "unload of model " + std::to_string(id_));
+    } catch (const error&) {
+      // The child failed on the way out: the session has recorded it; nothing to undo.
+    }
+  }
+  exec_dynamics_model(const exec_dynamics_model&) = delete;
+  exec_dynamics_model& operator=(const exec_dynamics_model&) = delete;
+
+  std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override {
+    std::vector<double> m;
+    if (!ask(dynamics_quantity::mass_matrix, {{"q", &q}}, n_ * n_, m)) return std::nullopt;
+    return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(m.data(), n_, n_);
+  }
+  std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) override {
+    return vector(dynamics_quantity::bias, {{"q", &q}, {"qdot", &qdot}});
+  }
+  std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                                         const Eigen::VectorXd& qddot) override {
+    return vector(dynamics_quantity::inverse, {{"q", &q}, {"qdot", &qdot}, {"qddot", &qddot}});
+  }
+  std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                                         const Eigen::VectorXd& tau) override {
+    return vector(dynamics_quantity::forward, {{"q", &q}, {"qdot", &qdot}, {"tau", &tau}});
+  }
+
+ private:
+  using fields = std::vector<std::pair<const char*, const Eigen::VectorXd*>>;
+
+  bool loaded_into_live() const { return s_->current && generation_ == s_->failures; }
+
+  /// The robot into the live child: "load", refused (robot_refused) or failed (library_failure).
+  void load() {
+    id_ = ++s_->next_run;
+    generation_ = s_->failures;
+    const std::string what = "load of robot " + robot_ + " as model " + std::to_string(id_);
+    const json reply = exchange(
+        *s_, {{"op", "load"}, {"model", id_}, {"urdf", urdf_}, {"gravity", numbers_json(gravity_.data(), 3, s_->decimal)}},
+        what);
+    checked(*s_, what, [&] {
+      only_known_fields(reply, {"ok", "refused", "error"}, "the reply");
+      return 0;
+    });
+    if (const auto r = reply.find("refused"); r != reply.end())
+      throw robot_refused("exec::" + s_->name + " refused robot " + robot_ + ": " + error_text(*r));
+    if (const auto e = reply.find("error"); e != reply.end())
+      throw library_failure("exec::" + s_->name + ": " + what + ": " + error_text(*e));
+    if (reply.value("ok", false) != true) {
+      const std::string message = s_->prefix() + what + ": neither ok, refused nor error: " + excerpt_json(reply);
+      s_->failed(message);
+      throw exec_error(message);
+    }
+  }
+
+  std::optional<Eigen::VectorXd> vector(dynamics_quantity quantity, const fields& in) {
+    std::vector<double> y;
+    if (!ask(quantity, in, n_, y)) return std::nullopt;
+    return Eigen::Map<const Eigen::VectorXd>(y.data(), n_);
+  }
+
+  /// One quantity at a state: false where the child does not compute it.
+  bool ask(dynamics_quantity quantity, const fields& in, int count, std::vector<double>& out) {
+    if (std::find(offered_.begin(), offered_.end(), quantity) == offered_.end()) return false;
+    for (const auto& [name, v] : in)
+      if (v->size() != n_)
+        throw dimension_error("exec::" + s_->name + ": " + quantity_op(quantity) + ": the robot has " + std::to_string(n_) +
+                              " coordinates, given " + name + " of " + std::to_string(v->size()));
+    if (!loaded_into_live()) load();  // the child that held the model failed since
+    json request = {{"op", quantity_op(quantity)}, {"model", id_}};
+    for (const auto& [name, v] : in) request[name] = numbers_json(v->data(), n_, s_->decimal);
+    const std::string what = std::string(quantity_op(quantity)) + " of model " + std::to_string(id_) + " (robot " +
+                             robot_ + ") at q = " + vector_text(*in.front().second);
+    const json reply = exchange(*s_, request, what);
+    const char* field = reply_field(quantity);
+    checked(*s_, what, [&] {
+      only_known_fields(reply, {field, "error"}, "the reply");
+      return 0;
+    });
+    if (const auto e = reply.find("error"); e != reply.end())
+      throw library_failure("exec::" + s_->name + ": " + what + ": " + error_text(*e));
+    out.resize(static_cast<std::size_t>(count));
+    // A non-finite number is read as such: check_dynamics names it as the library's value.
+    checked(*s_, what, [&] { return numbers_into(reply, field, count, out.data(), "the reply", false); });
+    return true;
+  }
+
+  std::shared_ptr<session> s_;
+  std::vector<dynamics_quantity> offered_;
+  std::string urdf_;
+  Eigen::Vector3d gravity_;
+  std::string robot_;
+  int n_ = 0;
+  long long id_ = 0;
+  int generation_ = 0;  ///< the session's failures when the model was loaded
+};
+}  // namespace
+
+exec_dynamics_target exec_dynamics(const std::vector<std::string>& command, const exec_options& options) {
+  exec_protocol::handshake_fields h;
+  auto s = open_session(command, options, "dynamics", h);
+  exec_dynamics_target target;
+  target.library.name = "exec::" + h.name;
+  target.library.origin = served_by(h.origin, command);
+  target.library.selector = "--exec-dynamics -- " + command_text(command);
+  const std::vector<dynamics_quantity> offered = h.quantities;
+  target.library.load = [s, offered](const robots::robot& robot) -> std::unique_ptr<dynamics_model> {
+    return std::make_unique<exec_dynamics_model>(s, offered, robot);
+  };
+  target.failures = [s] { return s->failures; };
+  target.last_failure = [s] { return s->last_failure; };
+  return target;
+}
+
+}  // namespace mechcheck::audit

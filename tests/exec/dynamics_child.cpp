@@ -1,0 +1,113 @@
+// A child serving a dynamics library by the protocol of docs/protocol.md (kind "dynamics"),
+// for the tests of exec_dynamics: the robot's own Lagrangian in double (robots/dynamics.hpp),
+// or that with one fault each.
+//
+// Usage: mechcheck_exec_dynamics_child MODE
+//   right         M, h, tau and qddot from the robot's Lagrangian in double
+//   bias_sign     the bias forces with their sign flipped (the audit must disagree)
+//   mass_only     offers the mass matrix alone
+//   refuse_trees  refuses a robot with a link of two children ("a tree")
+//   crash_third   aborts at its third quantity request (its models are loaded again into
+//                 the next child)
+//   load_error    replies an error to every load
+//   nan           a mass matrix holding "nan"
+//   short         a mass matrix of one number too few
+#include <cstdlib>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "mechcheck/audit/problems/urdf.hpp"
+#include "mechcheck/robots/dynamics.hpp"
+
+using json = nlohmann::json;
+namespace robots = mechcheck::robots;
+
+namespace {
+double number(const json& v) { return v.is_string() ? std::strtod(v.get<std::string>().c_str(), nullptr) : v.get<double>(); }
+
+mechcheck::dynamic_vector<double> vector_of(const json& v) {
+  mechcheck::dynamic_vector<double> out(static_cast<Eigen::Index>(v.size()));
+  for (std::size_t i = 0; i < v.size(); ++i) out(Eigen::Index(i)) = number(v[i]);
+  return out;
+}
+
+json numbers(const double* x, Eigen::Index n) {
+  json out = json::array();
+  for (Eigen::Index i = 0; i < n; ++i) out.push_back(x[i]);
+  return out;
+}
+
+void send(const json& j) { std::cout << j.dump() << "\n" << std::flush; }
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string mode = argc > 1 ? argv[1] : "right";
+  json quantities = mode == "mass_only" ? json{"mass_matrix"} : json{"mass_matrix", "bias", "inverse", "forward"};
+  send({{"protocol", "mechcheck"}, {"version", 1}, {"kind", "dynamics"}, {"name", "test_dynamics/" + mode},
+        {"origin", "tests/exec/dynamics_child.cpp"}, {"quantities", quantities}});
+  std::map<long long, std::unique_ptr<robots::robot_model<double>>> models;
+  int asked = 0;
+  std::string line;
+  while (std::getline(std::cin, line)) {
+    const json r = json::parse(line);
+    const std::string op = r.at("op");
+    if (op == "load") {
+      if (mode == "load_error") {
+        send({{"error", "cannot load"}});
+        continue;
+      }
+      robots::robot robot = mechcheck::audit::parse_urdf(r.at("urdf").get<std::string>());
+      for (int i = 0; i < 3; ++i) robot.gravity(i) = number(r.at("gravity")[std::size_t(i)]);
+      if (mode == "refuse_trees") {
+        std::map<std::string, int> children;
+        bool tree = false;
+        for (const auto& j : robot.joints) tree = tree || ++children[j.parent] > 1;
+        if (tree) {
+          send({{"refused", "a tree (a link of two children)"}});
+          continue;
+        }
+      }
+      models[r.at("model").get<long long>()] = std::make_unique<robots::robot_model<double>>(robot);
+      send({{"ok", true}});
+      continue;
+    }
+    if (op == "unload") {
+      models.erase(r.at("model").get<long long>());
+      send({{"ok", true}});
+      continue;
+    }
+    if (mode == "crash_third" && ++asked == 3) std::abort();
+    const auto& m = *models.at(r.at("model").get<long long>());
+    const auto q = vector_of(r.at("q"));
+    const auto n = q.size();
+    const auto qdot = r.contains("qdot") ? vector_of(r.at("qdot")) : mechcheck::dynamic_vector<double>::Zero(n).eval();
+    const auto terms = robots::motion_terms_at(m, q, qdot);
+    if (op == "mass_matrix") {
+      const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> mm = terms.mass_matrix;
+      if (mode == "nan") {
+        json x = numbers(mm.data(), n * n);
+        x[0] = "nan";
+        send({{"m", x}});
+      } else {
+        send({{"m", numbers(mm.data(), mode == "short" ? n * n - 1 : n * n)}});
+      }
+      continue;
+    }
+    const mechcheck::dynamic_vector<double> h = mode == "bias_sign" ? (-terms.bias).eval() : terms.bias;
+    if (op == "bias") {
+      send({{"h", numbers(h.data(), n)}});
+    } else if (op == "inverse") {
+      const mechcheck::dynamic_vector<double> tau = terms.mass_matrix * vector_of(r.at("qddot")) + h;
+      send({{"tau", numbers(tau.data(), n)}});
+    } else if (op == "forward") {
+      const mechcheck::dynamic_vector<double> qddot = terms.mass_matrix.ldlt().solve(vector_of(r.at("tau")) - h);
+      send({{"qddot", numbers(qddot.data(), n)}});
+    } else {
+      send({{"error", "unknown request " + op}});
+    }
+  }
+}

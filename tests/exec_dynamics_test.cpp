@@ -1,0 +1,150 @@
+// The exec protocol's dynamics kind (adapters/exec.hpp, docs/protocol.md): a child computing
+// the robot's Lagrangian in double agrees on random robots; one with the bias forces' sign
+// flipped is caught and shrunk; refusals, the quantities a child offers, a crash (the models
+// loaded again into the next child), a load's error, a non-finite value and a short reply
+// are each what the protocol says.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "mechcheck/audit/adapters/exec.hpp"
+#include "mechcheck/audit/problems/urdf.hpp"
+
+#ifndef MECHCHECK_EXEC_DYNAMICS_CHILD
+#error "the build defines MECHCHECK_EXEC_DYNAMICS_CHILD, the path of tests/exec/dynamics_child.cpp's program"
+#endif
+
+namespace exec_dynamics_test {
+using namespace mechcheck;
+namespace audit = mechcheck::audit;
+
+std::vector<std::string> child(const std::string& mode) { return {MECHCHECK_EXEC_DYNAMICS_CHILD, mode}; }
+
+audit::dynamics_options few(int robots) {
+  audit::dynamics_options o;
+  o.robots = robots;
+  o.seed = 1;
+  o.max_links = 4;
+  return o;
+}
+
+/// Two links on skew axes, the second prismatic, a centre of mass off both.
+robots::robot arm() {
+  return audit::parse_urdf(R"(<robot name="arm"><link name="base"/>
+    <link name="a"><inertial><origin xyz="0.1 -0.2 0.05" rpy="0.3 -0.2 1.1"/><mass value="1.5"/>
+      <inertia ixx="0.02" ixy="0.001" ixz="0" iyy="0.03" iyz="0" izz="0.04"/></inertial></link>
+    <link name="b"><inertial><origin xyz="0.3 0 0" rpy="0 0 0"/><mass value="0.5"/>
+      <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+    <joint name="j1" type="revolute"><parent link="base"/><child link="a"/><axis xyz="0 0.6 0.8"/></joint>
+    <joint name="j2" type="prismatic"><parent link="a"/><child link="b"/><origin xyz="0.4 0 0"/>
+      <axis xyz="1 0 0"/></joint></robot>)");
+}
+
+audit::dynamics_state state() {
+  audit::dynamics_state x;
+  x.q = Eigen::Vector2d(0.3, -0.2);
+  x.qdot = Eigen::Vector2d(1.1, 0.4);
+  x.qddot = Eigen::Vector2d(-0.5, 2.0);
+  x.tau = Eigen::Vector2d(3.0, -1.0);
+  return x;
+}
+
+TEST(exec_dynamics, a_right_child_agrees_on_random_robots) {
+  const audit::exec_dynamics_target t = audit::exec_dynamics(child("right"));
+  EXPECT_EQ(t.library.name, "exec::test_dynamics/right");
+  const audit::dynamics_campaign c = audit::run_dynamics_campaign(t.library, few(20));
+  EXPECT_TRUE(c.agrees()) << c.disagreement << c.note;
+  EXPECT_EQ(c.robots, 20);
+  for (const auto& f : c.figures) {
+    EXPECT_EQ(f.checked, 20) << audit::dynamics_quantity_name(f.quantity);
+    EXPECT_LE(f.largest, f.budget) << audit::dynamics_quantity_name(f.quantity);
+  }
+  EXPECT_EQ(t.failures(), 0);
+}
+
+TEST(exec_dynamics, a_flipped_bias_sign_is_caught_and_shrunk) {
+  const audit::exec_dynamics_target t = audit::exec_dynamics(child("bias_sign"));
+  const audit::dynamics_campaign c = audit::run_dynamics_campaign(t.library, few(20));
+  ASSERT_FALSE(c.agrees());
+  EXPECT_EQ(c.disagreement.rfind("bias forces: residual", 0), 0u) << c.disagreement;
+  EXPECT_NE(c.counterexample_urdf.find("<robot"), std::string::npos);
+  // Shrunk: a robot of one moving joint shows it.
+  EXPECT_EQ(robots::validate(audit::parse_urdf(c.counterexample_urdf)).dofs, 1) << c.counterexample_urdf;
+}
+
+TEST(exec_dynamics, a_child_computes_the_quantities_it_lists_and_refuses_by_name) {
+  const audit::exec_dynamics_target mass = audit::exec_dynamics(child("mass_only"));
+  const audit::dynamics_check m = audit::check_dynamics(mass.library, arm(), state());
+  ASSERT_EQ(m.residuals.size(), 1u);
+  EXPECT_EQ(m.residuals[0].quantity, audit::dynamics_quantity::mass_matrix);
+  EXPECT_TRUE(m.residuals[0].within()) << m.residuals[0].residual;
+
+  const audit::exec_dynamics_target chains = audit::exec_dynamics(child("refuse_trees"));
+  const audit::dynamics_campaign c = audit::run_dynamics_campaign(chains.library, few(30));
+  EXPECT_TRUE(c.agrees()) << c.disagreement << c.note;
+  EXPECT_GT(c.refused, 0);
+  EXPECT_LT(c.refused, c.robots);
+  EXPECT_EQ(c.first_refusal.rfind("exec::test_dynamics/refuse_trees refused robot ", 0), 0u) << c.first_refusal;
+  EXPECT_NE(c.first_refusal.find("a tree (a link of two children)"), std::string::npos) << c.first_refusal;
+}
+
+TEST(exec_dynamics, a_crashed_child_is_replaced_and_its_models_loaded_again) {
+  const audit::exec_dynamics_target t = audit::exec_dynamics(child("crash_third"));
+  const audit::dynamics_state x = state();
+  auto model = t.library.load(arm());
+  const Eigen::MatrixXd first = *model->mass_matrix(x.q);
+  EXPECT_TRUE(model->bias(x.q, x.qdot).has_value());
+  try {
+    model->mass_matrix(x.q);  // the third request: the child aborts
+    ADD_FAILURE() << "the crash was not reported";
+  } catch (const audit::exec_error& e) {
+    EXPECT_NE(std::string(e.what()).find("mass_matrix of model 1 (robot arm) at q = (0.29999999999999999, "),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("killed by signal 6"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(t.failures(), 1);
+  const Eigen::MatrixXd again = *model->mass_matrix(x.q);  // loaded into the new child
+  EXPECT_EQ(again, first);
+}
+
+TEST(exec_dynamics, a_failed_load_a_non_finite_value_and_a_short_reply_are_typed) {
+  const audit::dynamics_state x = state();
+  const audit::exec_dynamics_target load_error = audit::exec_dynamics(child("load_error"));
+  try {
+    load_error.library.load(arm());
+    ADD_FAILURE() << "a load's error was not reported";
+  } catch (const audit::library_failure& e) {
+    EXPECT_NE(std::string(e.what()).find("load of robot arm as model 1: cannot load"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(load_error.failures(), 0);  // the library's error, not the child's failure
+
+  const audit::exec_dynamics_target nan = audit::exec_dynamics(child("nan"));
+  EXPECT_THROW(audit::check_dynamics(nan.library, arm(), x), non_finite_error);
+  EXPECT_EQ(nan.failures(), 0);
+
+  const audit::exec_dynamics_target short_reply = audit::exec_dynamics(child("short"));
+  try {
+    audit::check_dynamics(short_reply.library, arm(), x);
+    ADD_FAILURE() << "a short reply was not reported";
+  } catch (const audit::exec_error& e) {
+    EXPECT_NE(std::string(e.what()).find("\"m\""), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(short_reply.failures(), 1);
+}
+
+TEST(exec_dynamics, a_handshake_lists_known_quantities_once) {
+  using audit::exec_protocol::parse_handshake;
+  const std::string head = R"({"protocol": "mechcheck", "version": 1, "kind": "dynamics", "name": "d", )";
+  const auto h = parse_handshake(head + R"("quantities": ["bias", "mass_matrix"]})", "dynamics");
+  ASSERT_EQ(h.quantities.size(), 2u);
+  EXPECT_EQ(h.quantities[0], audit::dynamics_quantity::bias);
+  EXPECT_THROW(parse_handshake(head + R"("quantities": ["mass"]})", "dynamics"), audit::exec_error);
+  EXPECT_THROW(parse_handshake(head + R"("quantities": ["bias", "bias"]})", "dynamics"), audit::exec_error);
+  EXPECT_THROW(parse_handshake(head + R"("quantities": []})", "dynamics"), audit::exec_error);
+  EXPECT_THROW(parse_handshake(head + R"("quantities": ["bias"], "integrators": []})", "dynamics"), audit::exec_error);
+  EXPECT_THROW(parse_handshake(head + R"("quantities": ["bias"]})", "engine"), audit::exec_error);
+}
+
+}  // namespace exec_dynamics_test
