@@ -5,6 +5,7 @@
 // are each what the protocol says.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -132,6 +133,28 @@ TEST(exec_dynamics, a_failed_load_a_non_finite_value_and_a_short_reply_are_typed
     EXPECT_NE(std::string(e.what()).find("\"m\""), std::string::npos) << e.what();
   }
   EXPECT_EQ(short_reply.failures(), 1);
+}
+
+TEST(exec_dynamics, the_robot_a_child_holds_is_the_reference_and_its_distance_is_measured) {
+  const audit::exec_dynamics_target t = audit::exec_dynamics(child("held"));
+  const audit::dynamics_check c = audit::check_dynamics(t.library, arm(), state());
+  ASSERT_EQ(c.residuals.size(), 4u);
+  for (const auto& r : c.residuals) EXPECT_TRUE(r.within()) << audit::dynamics_quantity_name(r.quantity) << " " << r.residual;
+  // Masses 2^-20 heavier: M differs by about 2^-20 of its scale, 2^32 eps.
+  ASSERT_TRUE(c.model_difference.has_value());
+  EXPECT_GT(*c.model_difference, std::ldexp(1.0, 30));
+  EXPECT_LT(*c.model_difference, std::ldexp(1.0, 33));
+  // A child that holds the robot it was given says nothing: no difference is measured.
+  const audit::exec_dynamics_target right = audit::exec_dynamics(child("right"));
+  EXPECT_FALSE(audit::check_dynamics(right.library, arm(), state()).model_difference.has_value());
+
+  const audit::exec_dynamics_target wrong = audit::exec_dynamics(child("held_short"));
+  try {
+    audit::check_dynamics(wrong.library, arm(), state());
+    ADD_FAILURE() << "a held robot of other coordinates was accepted";
+  } catch (const audit::exec_error& e) {
+    EXPECT_NE(std::string(e.what()).find("\"held\": a robot of 1 moving joints, the robot 2"), std::string::npos) << e.what();
+  }
 }
 
 TEST(exec_dynamics, a_handshake_lists_known_quantities_once) {

@@ -12,6 +12,10 @@
 //   load_error    replies an error to every load
 //   nan           a mass matrix holding "nan"
 //   short         a mass matrix of one number too few
+//   held          computes with the robot's links 2^-20 heavier and says so (the load's
+//                 "held" URDF)
+//   held_short    says it holds a robot of one moving joint fewer
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <map>
@@ -71,8 +75,15 @@ int main(int argc, char** argv) {
           continue;
         }
       }
+      json reply = {{"ok", true}};
+      if (mode == "held" || mode == "held_short") {
+        for (auto& l : robot.links)
+          if (l.body) l.body->mass *= 1 + std::ldexp(1.0, -20);
+        if (mode == "held_short") robot.joints.front().type = robots::joint_type::fixed;
+        reply["held"] = mechcheck::audit::to_urdf(robot);
+      }
       models[r.at("model").get<long long>()] = std::make_unique<robots::robot_model<double>>(robot);
-      send({{"ok", true}});
+      send(reply);
       continue;
     }
     if (op == "unload") {

@@ -1,5 +1,5 @@
-// The engine side of mechcheck's exec protocol (docs/protocol.md, version 1) for Node
-// clients: one JSON object a line on standard input and output. The handshake asks for
+// The child's side of mechcheck's exec protocol (docs/protocol.md, version 1) for Node
+// clients, engines and dynamics libraries: one JSON object a line on standard input and output. The handshake asks for
 // decimal numbers (17 significant digits, which Number() reads exactly); replies carry JSON
 // numbers (JSON.stringify writes the shortest decimal that reads back exactly).
 //
@@ -93,6 +93,49 @@ export async function serveEngine(hello, start, moments) {
       send({ ok: true });
     } else {
       send({ error: `unknown op ${JSON.stringify(r.op)}` });
+    }
+  }
+}
+
+/** The dynamics side (kind "dynamics"): serveDynamics(hello, load) answers the audit until it
+ * closes our input. load(urdf, gravity) builds a model of the robot, or throws Refused for a
+ * robot the library cannot express; a model has massMatrix(q) (row by row), bias(q, qdot),
+ * inverse(q, qdot, qddot), forward(q, qdot, tau), optionally `held` (the robot it computes
+ * with, as URDF, where its builder changed the one given) and free(). */
+export async function serveDynamics(hello, load) {
+  send({ protocol: 'mechcheck', version: 1, kind: 'dynamics', numbers: 'decimal',
+    quantities: ['mass_matrix', 'bias', 'inverse', 'forward'], ...hello });
+  const models = new Map();
+  const numbers = (v) => v.map(Number);
+  // A value that is not finite goes as the protocol writes it ("nan", "inf"): the library's.
+  const out = (v) => v.map((x) => (Number.isFinite(x) ? x : Number.isNaN(x) ? 'nan' : x > 0 ? 'inf' : '-inf'));
+  const lines = readline.createInterface({ input: process.stdin, crlfDelay: Infinity });
+  for await (const line of lines) {
+    const r = JSON.parse(line);
+    try {
+      if (r.op === 'load') {
+        try {
+          const model = load(r.urdf, numbers(r.gravity));
+          models.set(r.model, model);
+          send(model.held ? { ok: true, held: model.held } : { ok: true });
+        } catch (e) {
+          send(e instanceof Refused ? { refused: e.message } : { error: String(e?.message ?? e) });
+        }
+      } else if (r.op === 'unload') {
+        models.get(r.model)?.free?.();
+        models.delete(r.model);
+        send({ ok: true });
+      } else {
+        const m = models.get(r.model);
+        if (!m) throw new Error(`no model ${r.model}`);
+        if (r.op === 'mass_matrix') send({ m: out(m.massMatrix(numbers(r.q))) });
+        else if (r.op === 'bias') send({ h: out(m.bias(numbers(r.q), numbers(r.qdot))) });
+        else if (r.op === 'inverse') send({ tau: out(m.inverse(numbers(r.q), numbers(r.qdot), numbers(r.qddot))) });
+        else if (r.op === 'forward') send({ qddot: out(m.forward(numbers(r.q), numbers(r.qdot), numbers(r.tau))) });
+        else send({ error: `unknown op ${JSON.stringify(r.op)}` });
+      }
+    } catch (e) {
+      send({ error: String(e?.message ?? e) });
     }
   }
 }

@@ -52,6 +52,8 @@ class exec_dynamics_model final : public dynamics_model {
     }
   }
   exec_dynamics_model(const exec_dynamics_model&) = delete;
+
+  std::optional<robots::robot> held_robot() const override { return held_; }
   exec_dynamics_model& operator=(const exec_dynamics_model&) = delete;
 
   std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override {
@@ -85,7 +87,7 @@ class exec_dynamics_model final : public dynamics_model {
         *s_, {{"op", "load"}, {"model", id_}, {"urdf", urdf_}, {"gravity", numbers_json(gravity_.data(), 3, s_->decimal)}},
         what);
     checked(*s_, what, [&] {
-      only_known_fields(reply, {"ok", "refused", "error"}, "the reply");
+      only_known_fields(reply, {"ok", "refused", "error", "held"}, "the reply");
       return 0;
     });
     if (const auto r = reply.find("refused"); r != reply.end())
@@ -97,6 +99,24 @@ class exec_dynamics_model final : public dynamics_model {
       s_->failed(message);
       throw exec_error(message);
     }
+    if (const auto h = reply.find("held"); h != reply.end()) held_ = checked(*s_, what, [&] { return held_of(*h); });
+  }
+
+  /// The robot the library holds (a load's "held" URDF): its moving joints the robot's
+  /// coordinates, in order; gravity the robot's.
+  robots::robot held_of(const json& text) const {
+    if (!text.is_string()) throw exec_error("\"held\" is not a URDF text");
+    robots::robot r;
+    try {
+      r = parse_urdf(text.get<std::string>(), "the held robot");
+    } catch (const error& e) {
+      throw exec_error(std::string("\"held\": ") + e.what());
+    }
+    r.gravity = gravity_;
+    const int dofs = robots::validate(r).dofs;
+    if (dofs != n_)
+      throw exec_error("\"held\": a robot of " + std::to_string(dofs) + " moving joints, the robot " + std::to_string(n_));
+    return r;
   }
 
   std::optional<Eigen::VectorXd> vector(dynamics_quantity quantity, const fields& in) {
@@ -139,6 +159,7 @@ class exec_dynamics_model final : public dynamics_model {
   int n_ = 0;
   long long id_ = 0;
   int generation_ = 0;  ///< the session's failures when the model was loaded
+  std::optional<robots::robot> held_;
 };
 }  // namespace
 
