@@ -192,8 +192,12 @@ class mujoco_model final : public dynamics_model {
   }
 
  private:
+  /// The state, and nothing of an earlier call left: the applied forces, the accelerations
+  /// and the warnings cleared (mj_resetData would clear the whole arena, about 0.25 ms a call).
   void set(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) {
-    mj_resetData(m_.get(), d_.get());
+    mju_zero(d_->qfrc_applied, m_->nv);
+    mju_zero(d_->qacc, m_->nv);
+    for (auto& w : d_->warning) w.number = 0;
     for (int i = 0; i < n_; ++i) {
       d_->qpos[qpos_.at(i)] = q(i);
       d_->qvel[dof_.at(i)] = qdot(i);
