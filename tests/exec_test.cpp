@@ -303,6 +303,20 @@ TEST(exec, an_engine_child_that_claims_too_much_is_contradicted) {
   EXPECT_EQ(t.failures(), 0) << t.last_failure();
 }
 
+TEST(exec, an_engine_in_single_precision_is_judged_right_by_the_stall_detection) {
+  // The pendulum engine with its state rounded to float after every step (the arithmetic
+  // of the JavaScript engines in WebAssembly): the order studies stop where the errors stop
+  // falling, so each method keeps its order and a false claim is still contradicted.
+  const auto t = audit::exec_engine(child("engine_float"));
+  for (const auto& [name, order] : {std::pair{"::euler", 1.0}, std::pair{"::rk4", 4.0}}) {
+    const auto a = audit::audit_engine(integrator(t, name), pendulums());
+    EXPECT_EQ(a.order.result, outcome::confirmed) << name << ": " << a.order.evidence;
+    EXPECT_NEAR(std::stod(a.order.measured), order, 0.1) << name << ": " << a.order.measured;
+  }
+  const auto says_4 = audit::audit_engine(integrator(t, "::euler_says_4"), pendulums());
+  EXPECT_EQ(says_4.order.result, outcome::contradicted) << says_4.order.evidence;
+}
+
 TEST(exec, an_engine_that_fails_is_a_failed_run_at_its_step_and_the_child_goes_on) {
   const auto t = audit::exec_engine(child("engine_diverges"));
   const auto a = audit::audit_engine(integrator(t, "::euler"), pendulums());

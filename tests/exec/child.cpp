@@ -21,6 +21,8 @@
 //   engine_diverges  the same, failing at step 1000 of every run ("diverged")
 //   engine_broken    the same, a reading of 17 numbers at the second request of a run
 //   engine_decimal   the same, asking for decimal numbers (handshake "numbers")
+//   engine_float     the same, its state rounded to float after every step (an engine
+//                    that computes in single precision, as WebAssembly physics builds do)
 //   engine COST_NS   the engine, each step taking COST_NS nanoseconds of wall time (a busy
 //                    wait: bench/exec_bench.cpp)
 #include <unistd.h>
@@ -172,6 +174,7 @@ void serve_engine(long cost_ns) {
                                  {{"name", "rk4"}, {"claims", {{"order", 4}}}},
                                  {{"name", "euler_says_4"}, {"claims", {{"order", 4}}}}}}};
   if (decimal) hello["numbers"] = "decimal";
+  const bool single = mode == "engine_float";
   send(hello);
   std::map<long long, pendulum> runs;
   for (;;) {
@@ -216,6 +219,7 @@ void serve_engine(long cost_ns) {
           break;
         }
         p.step(h);
+        if (single) p.theta = static_cast<float>(p.theta), p.rate = static_cast<float>(p.rate);
         if (each || k == n) readings += (readings.empty() ? "" : ",") + reading_text(p, mode == "engine_broken" && p.requests == 2);
       }
       if (failed) continue;
