@@ -1,0 +1,210 @@
+#!/usr/bin/env node
+// Rapier (npm @dimforge/rapier3d-compat: the Rust engine compiled to WebAssembly) served to
+// mechcheck's audit as an engine (docs/protocol.md): World.step at a fixed step, its joints
+// as impulse joints (constraints between bodies, solved iteratively), on every scenario it
+// can express. Rapier's multibody joints (reduced coordinates) are not offered: its
+// JavaScript API sets no multibody joint position or velocity (MultibodyJoint has
+// setContactsEnabled only), and a link starts at its joint's zero, at rest, whatever the
+// body's pose and velocity -- no scenario starts there.
+//
+//   mechcheck-audit -o report --exec-engine -- node examples/exec/node/rapier_engine.mjs
+//
+// The scenario's model: a dynamic RigidBody per body, its mass and principal moments given by
+// setAdditionalMassProperties with the centre of mass at the body's origin (so translation()
+// and linvel() are the centre of mass's), no collider (nothing collides and nothing adds mass),
+// damping set to 0 (Rapier's defaults are 0 too) and sleeping off (setCanSleep(false): a slow
+// body would otherwise be frozen); gravity as the World's; the central force and the mutual
+// gravitation set by addForce before each step (Rapier applies a body's forces once a step).
+// A hinge about y is a revolute joint, a ball a spherical one, to a fixed body at the origin
+// or between links. Rapier computes in single precision (f32) in this build.
+import RAPIER from '@dimforge/rapier3d-compat';
+import { readFileSync } from 'node:fs';
+import { Refused, frame, scenarioOf, serveEngine } from './protocol.mjs';
+
+await RAPIER.init();
+const version = JSON.parse(readFileSync(new URL('./node_modules/@dimforge/rapier3d-compat/package.json', import.meta.url))).version;
+
+const v3 = (a) => ({ x: a[0], y: a[1], z: a[2] });
+const arr = (v) => [v.x, v.y, v.z];
+const rotate = (r, x) => [0, 1, 2].map((i) => r[3 * i] * x[0] + r[3 * i + 1] * x[1] + r[3 * i + 2] * x[2]);
+const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+const add = (a, b) => a.map((x, i) => x + b[i]);
+const sub = (a, b) => a.map((x, i) => x - b[i]);
+const aboutY = (t) => [Math.cos(t), 0, Math.sin(t), 0, 1, 0, -Math.sin(t), 0, Math.cos(t)];
+const times = (a, b) => {
+  const out = new Array(9).fill(0);
+  for (let i = 0; i < 3; ++i) for (let j = 0; j < 3; ++j) for (let k = 0; k < 3; ++k) out[3 * i + j] += a[3 * i + k] * b[3 * k + j];
+  return out;
+};
+
+/** A unit quaternion {x, y, z, w} of a rotation matrix (row-major), Shepperd's method. */
+function quaternionOf(r) {
+  const [m00, m01, m02, m10, m11, m12, m20, m21, m22] = r;
+  const trace = m00 + m11 + m22;
+  let x, y, z, w;
+  if (trace > 0) {
+    const s = 2 * Math.sqrt(1 + trace);
+    w = s / 4, x = (m21 - m12) / s, y = (m02 - m20) / s, z = (m10 - m01) / s;
+  } else if (m00 > m11 && m00 > m22) {
+    const s = 2 * Math.sqrt(1 + m00 - m11 - m22);
+    w = (m21 - m12) / s, x = s / 4, y = (m01 + m10) / s, z = (m02 + m20) / s;
+  } else if (m11 > m22) {
+    const s = 2 * Math.sqrt(1 + m11 - m00 - m22);
+    w = (m02 - m20) / s, x = (m01 + m10) / s, y = s / 4, z = (m12 + m21) / s;
+  } else {
+    const s = 2 * Math.sqrt(1 + m22 - m00 - m11);
+    w = (m10 - m01) / s, x = (m02 + m20) / s, y = (m12 + m21) / s, z = s / 4;
+  }
+  return { x, y, z, w };
+}
+
+/** The rotation (row-major) of a unit quaternion {x, y, z, w}. */
+function rotationOf({ x, y, z, w }) {
+  return [
+    1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
+    2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
+    2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y),
+  ];
+}
+
+const integrators = [
+  { name: 'impulse_joints', origin: 'World.step with the joints as ImpulseJoints (world.createImpulseJoint)' },
+];
+
+class Run {
+  constructor(integrator, scenario) {
+    if (!integrators.some((i) => i.name === integrator)) throw new Refused(`no integrator ${integrator}`);
+    const s = scenarioOf(scenario);
+    this.s = s;
+    const world = new RAPIER.World(v3([0, 0, -s.gravity]));
+    this.world = world;
+    const ground = world.createRigidBody(RAPIER.RigidBodyDesc.fixed());
+    const body = (mass, inertia, rotation, position, velocity, omega) =>
+      world.createRigidBody(
+        RAPIER.RigidBodyDesc.dynamic()
+          .setTranslation(...position)
+          .setRotation(quaternionOf(rotation))
+          .setLinvel(...velocity)
+          .setAngvel(v3(omega))
+          .setAdditionalMassProperties(mass, v3([0, 0, 0]), v3(inertia), { x: 0, y: 0, z: 0, w: 1 })
+          .setLinearDamping(0)
+          .setAngularDamping(0)
+          .setCanSleep(false),
+      );
+    const joint = (data, a, b) => world.createImpulseJoint(data, a, b, true);
+    this.bodies = [];
+    if (s.structure === 'one_body') {
+      const x = s.joint === 'free' ? s.position0 : rotate(s.rotation0, s.com);
+      const v = s.joint === 'free' ? s.velocity0 : cross(s.omega0, x);
+      const b = body(s.mass, s.inertia, s.rotation0, x, v, s.omega0);
+      this.bodies.push(b);
+      const pivot = v3(s.com.map((c) => -c)); // the pivot in the body's frame (its origin at the centre of mass)
+      if (s.joint === 'hinge_y') joint(RAPIER.JointData.revolute(v3([0, 0, 0]), pivot, v3([0, 1, 0])), ground, b);
+      else if (s.joint === 'ball') joint(RAPIER.JointData.spherical(v3([0, 0, 0]), pivot), ground, b);
+    } else if (s.structure === 'chain') {
+      let rotation = [1, 0, 0, 0, 1, 0, 0, 0, 1], origin = [0, 0, 0], omega = [0, 0, 0], velocity = [0, 0, 0];
+      let parent = ground, parentCom = [0, 0, 0];
+      for (const l of s.links) {
+        const hinge = add(origin, rotate(rotation, l.hinge));
+        const hingeVelocity = add(velocity, cross(omega, sub(hinge, origin)));
+        rotation = times(rotation, aboutY(l.angle0));
+        omega = add(omega, [0, l.rate0, 0]);
+        origin = hinge;
+        velocity = hingeVelocity;
+        const com = add(origin, rotate(rotation, l.com));
+        const b = body(l.mass, l.inertia, rotation, com, add(velocity, cross(omega, sub(com, origin))), omega);
+        this.bodies.push(b);
+        joint(RAPIER.JointData.revolute(v3(sub(l.hinge, parentCom)), v3(l.com.map((c) => -c)), v3([0, 1, 0])), parent, b);
+        parent = b;
+        parentCom = l.com;
+      }
+      if (s.loop)
+        joint(RAPIER.JointData.revolute(v3(sub(s.loop.point, parentCom)), v3(s.loop.anchor), v3([0, 1, 0])), parent, ground);
+    } else {
+      for (const l of s.links) this.bodies.push(body(l.mass, l.inertia, [1, 0, 0, 0, 1, 0, 0, 0, 1], l.position0, l.velocity0, [0, 0, 0]));
+    }
+    // An impulse joint is solved by numSolverIterations of a soft constraint: a compliant
+    // joint, not the rigid one.
+    if ((s.structure === 'one_body' && s.joint !== 'free') || s.structure === 'chain')
+      this.modelDiffers =
+        `Rapier ${version} solves an impulse joint as a soft constraint (integration parameters: ` +
+        `${world.integrationParameters.numSolverIterations} solver iterations): a compliant joint, not the rigid one`;
+    this.steps = 0;
+  }
+
+  applyForces() {
+    const s = this.s;
+    if (s.central === 0 && s.gravitation === 0) return;
+    for (const b of this.bodies) b.resetForces(true);
+    if (s.central !== 0) {
+      const b = this.bodies[0];
+      const x = arr(b.translation()), r = Math.hypot(...x);
+      b.addForce(v3(x.map((xi) => (-s.mass * s.central * xi) / (r * r * r))), true);
+    }
+    if (s.gravitation !== 0)
+      for (let a = 0; a < this.bodies.length; ++a)
+        for (let c = a + 1; c < this.bodies.length; ++c) {
+          const r = sub(arr(this.bodies[c].translation()), arr(this.bodies[a].translation())), d = Math.hypot(...r);
+          const f = r.map((ri) => ((s.gravitation * s.links[a].mass * s.links[c].mass) / (d * d * d)) * ri);
+          this.bodies[a].addForce(v3(f), true);
+          this.bodies[c].addForce(v3(f.map((x) => -x)), true);
+        }
+  }
+
+  step(h) {
+    ++this.steps;
+    this.applyForces();
+    this.world.timestep = h;
+    this.world.step();
+    for (const b of this.bodies)
+      for (const x of [...arr(b.translation()), ...arr(b.linvel()), ...arr(b.angvel())])
+        if (!Number.isFinite(x)) throw new Error(`Rapier ${version}: step ${this.steps}: the state is not finite`);
+  }
+
+  reading() {
+    const frames = this.bodies.map((b) => frame(rotationOf(b.rotation()), arr(b.translation()), arr(b.linvel()), arr(b.angvel())));
+    return this.s.structure === 'one_body' ? { frame: frames[0] } : { links: frames };
+  }
+
+  free() {
+    this.world.free();
+  }
+}
+
+/** The principal moments Rapier computes for a shape: a body with the shape's collider of the
+ * shape's mass (ColliderDesc.setMass), its principalInertia(); the audit's axis (z) is
+ * Rapier's y for the cylinder, capsule and cone, whose moments are then reordered. */
+function moments(shape) {
+  const [a, b, c] = shape.size;
+  const world = new RAPIER.World(v3([0, 0, 0]));
+  try {
+    const body = world.createRigidBody(RAPIER.RigidBodyDesc.dynamic());
+    const collider = (desc, at) => world.createCollider(desc.setMass(at ? shape.mass / 2 : shape.mass).setTranslation(...(at ?? [0, 0, 0])), body);
+    if (shape.name === 'box') collider(RAPIER.ColliderDesc.cuboid(a / 2, b / 2, c / 2));
+    else if (shape.name === 'sphere') collider(RAPIER.ColliderDesc.ball(a));
+    else if (shape.name === 'cylinder') collider(RAPIER.ColliderDesc.cylinder(b / 2, a));
+    else if (shape.name === 'capsule') collider(RAPIER.ColliderDesc.capsule(b / 2, a));
+    else if (shape.name === 'cone') collider(RAPIER.ColliderDesc.cone(b / 2, a));
+    else if (shape.name === 'two_spheres') {
+      collider(RAPIER.ColliderDesc.ball(a), [b, 0, 0]);
+      collider(RAPIER.ColliderDesc.ball(a), [-b, 0, 0]);
+    } else throw new Refused(`Rapier ${version} has no ${shape.name} shape`);
+    const m = arr(body.principalInertia());
+    return m.sort((x, y) => x - y);
+  } finally {
+    world.free();
+  }
+}
+
+await serveEngine(
+  {
+    name: 'rapier',
+    origin:
+      `Rapier ${version} (npm @dimforge/rapier3d-compat, WebAssembly, f32) in Node ${process.version}: World.step(), ` +
+      'one step of World.timestep; its documentation declares no order ("The timestep length", ' +
+      'IntegrationParameters.dt)',
+    integrators,
+  },
+  (integrator, scenario) => new Run(integrator, scenario),
+  moments,
+);
