@@ -16,6 +16,7 @@
 // rigid one (said to the audit as the run's model_differs). The engine declares no order.
 import * as CANNON from 'cannon-es';
 import { readFileSync } from 'node:fs';
+import { chainLinks, cross, quaternionOf, rotate, sub } from './bodies.mjs';
 import { Refused, frame, scenarioOf, serveEngine } from './protocol.mjs';
 
 const version = JSON.parse(readFileSync(new URL('./node_modules/cannon-es/package.json', import.meta.url))).version;
@@ -23,37 +24,9 @@ const version = JSON.parse(readFileSync(new URL('./node_modules/cannon-es/packag
 const v3 = (a) => new CANNON.Vec3(a[0], a[1], a[2]);
 const arr = (v) => [v.x, v.y, v.z];
 
-/** R (row-major) times a vector. */
-const rotate = (r, x) => [0, 1, 2].map((i) => r[3 * i] * x[0] + r[3 * i + 1] * x[1] + r[3 * i + 2] * x[2]);
-const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
-const add = (a, b) => a.map((x, i) => x + b[i]);
-const sub = (a, b) => a.map((x, i) => x - b[i]);
-/** Rotation about y by angle, row-major. */
-const aboutY = (t) => [Math.cos(t), 0, Math.sin(t), 0, 1, 0, -Math.sin(t), 0, Math.cos(t)];
-const times = (a, b) => {
-  const out = new Array(9).fill(0);
-  for (let i = 0; i < 3; ++i) for (let j = 0; j < 3; ++j) for (let k = 0; k < 3; ++k) out[3 * i + j] += a[3 * i + k] * b[3 * k + j];
-  return out;
-};
-
-/** A quaternion (cannon-es's x, y, z, w) of a rotation matrix (row-major), Shepperd's method. */
-function quaternionOf(r) {
-  const [m00, m01, m02, m10, m11, m12, m20, m21, m22] = r;
-  const trace = m00 + m11 + m22;
-  let x, y, z, w;
-  if (trace > 0) {
-    const s = 2 * Math.sqrt(1 + trace);
-    w = s / 4, x = (m21 - m12) / s, y = (m02 - m20) / s, z = (m10 - m01) / s;
-  } else if (m00 > m11 && m00 > m22) {
-    const s = 2 * Math.sqrt(1 + m00 - m11 - m22);
-    w = (m21 - m12) / s, x = s / 4, y = (m01 + m10) / s, z = (m02 + m20) / s;
-  } else if (m11 > m22) {
-    const s = 2 * Math.sqrt(1 + m11 - m00 - m22);
-    w = (m02 - m20) / s, x = (m01 + m10) / s, y = s / 4, z = (m12 + m21) / s;
-  } else {
-    const s = 2 * Math.sqrt(1 + m22 - m00 - m11);
-    w = (m10 - m01) / s, x = (m02 + m20) / s, y = (m12 + m21) / s, z = s / 4;
-  }
+/** cannon-es's quaternion of a rotation matrix (row-major). */
+function quaternion(r) {
+  const { x, y, z, w } = quaternionOf(r);
   return new CANNON.Quaternion(x, y, z, w);
 }
 
@@ -68,7 +41,7 @@ function body(mass, inertia, rotation, position, velocity, omega) {
   const b = new CANNON.Body({ mass, linearDamping: 0, angularDamping: 0 });
   b.inertia.set(inertia[0], inertia[1], inertia[2]);
   b.invInertia.set(1 / inertia[0], 1 / inertia[1], 1 / inertia[2]);
-  b.quaternion.copy(quaternionOf(rotation));
+  b.quaternion.copy(quaternion(rotation));
   b.position.copy(v3(position));
   b.velocity.copy(v3(velocity));
   b.angularVelocity.copy(v3(omega));
@@ -104,18 +77,10 @@ class Run {
       else if (s.joint === 'ball') world.addConstraint(new CANNON.PointToPointConstraint(ground, v3([0, 0, 0]), b, pivot));
       if (s.joint !== 'free') this.modelDiffers = soft;
     } else if (s.structure === 'chain') {
-      // Each link's frame: its parent's rotated about y by its joint angle, at its hinge.
-      let rotation = [1, 0, 0, 0, 1, 0, 0, 0, 1], origin = [0, 0, 0], omega = [0, 0, 0], velocity = [0, 0, 0];
       let parent = ground, parentCom = [0, 0, 0];
-      for (const l of s.links) {
-        const hinge = add(origin, rotate(rotation, l.hinge)); // world
-        const hingeVelocity = add(velocity, cross(omega, sub(hinge, origin)));
-        rotation = times(rotation, aboutY(l.angle0));
-        omega = add(omega, [0, l.rate0, 0]);
-        origin = hinge;
-        velocity = hingeVelocity;
-        const com = add(origin, rotate(rotation, l.com));
-        const b = body(l.mass, l.inertia, rotation, com, add(velocity, cross(omega, sub(com, origin))), omega);
+      chainLinks(s).forEach((start, k) => {
+        const l = s.links[k];
+        const b = body(l.mass, l.inertia, start.rotation, start.com, start.velocity, start.omega);
         world.addBody(b);
         this.bodies.push(b);
         world.addConstraint(
@@ -128,7 +93,7 @@ class Run {
         );
         parent = b;
         parentCom = l.com;
-      }
+      });
       if (s.loop)
         world.addConstraint(
           new CANNON.HingeConstraint(parent, ground, {
