@@ -21,7 +21,7 @@ std::string vector_text(const Eigen::VectorXd& v) {
   return "(" + out + ")";
 }
 
-/// The reply field of each quantity and its count of numbers for n coordinates.
+/// The reply field of each quantity.
 const char* reply_field(dynamics_quantity q) {
   switch (q) {
     case dynamics_quantity::mass_matrix: return "m";
@@ -52,9 +52,9 @@ class exec_dynamics_model final : public dynamics_model {
     }
   }
   exec_dynamics_model(const exec_dynamics_model&) = delete;
+  exec_dynamics_model& operator=(const exec_dynamics_model&) = delete;
 
   std::optional<robots::robot> held_robot() const override { return held_; }
-  exec_dynamics_model& operator=(const exec_dynamics_model&) = delete;
 
   std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override {
     std::vector<double> m;
@@ -82,6 +82,7 @@ class exec_dynamics_model final : public dynamics_model {
   void load() {
     id_ = ++s_->next_run;
     generation_ = s_->failures;
+    held_.reset();  // what this child says, not what an earlier one said
     const std::string what = "load of robot " + robot_ + " as model " + std::to_string(id_);
     const json reply = exchange(
         *s_, {{"op", "load"}, {"model", id_}, {"urdf", urdf_}, {"gravity", numbers_json(gravity_.data(), 3, s_->decimal)}},
