@@ -18,8 +18,10 @@
 ///    types (a third builds Scalar(0) from an int), and its abs() does not compile over
 ///    them, so Eigen's pivoting decompositions cannot take AD scalars.
 
+#include <string>
 #include <type_traits>
 
+#include "mechcheck/core/errors.hpp"
 #include "mechcheck/core/precision.hpp"
 
 #include <unsupported/Eigen/AutoDiff>
@@ -140,6 +142,37 @@ const real_type_t<T>& innermost_value(const T& x) {
   } else {
     return x;
   }
+}
+
+/// p^T M^-1 p for a symmetric positive definite M, in any scalar: |L^-1 p|^2 with M = L L^T
+/// (Cholesky, written out: Eigen's decompositions do not compile over the AD scalars).
+/// Throws singular_error naming `who` when a pivot is not positive.
+template <class S>
+S inverse_quadratic_form(const dynamic_matrix<S>& m, const dynamic_vector<S>& p, const std::string& who) {
+  using R = real_type_t<S>;
+  using std::sqrt;
+  const Eigen::Index n = p.size();
+  dynamic_matrix<S> l = dynamic_matrix<S>::Constant(n, n, lift<S>(R(0)));
+  for (Eigen::Index j = 0; j < n; ++j) {
+    S d = m(j, j);
+    for (Eigen::Index k = 0; k < j; ++k) d -= l(j, k) * l(j, k);
+    if (!(innermost_value(d) > 0)) throw singular_error(who + ": the mass matrix is not positive definite");
+    l(j, j) = sqrt(d);
+    for (Eigen::Index i = j + 1; i < n; ++i) {
+      S s = m(i, j);
+      for (Eigen::Index k = 0; k < j; ++k) s -= l(i, k) * l(j, k);
+      l(i, j) = s / l(j, j);
+    }
+  }
+  S form = lift<S>(R(0));
+  dynamic_vector<S> y(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    S s = p(i);
+    for (Eigen::Index k = 0; k < i; ++k) s -= l(i, k) * y(k);
+    y(i) = s / l(i, i);
+    form += y(i) * y(i);
+  }
+  return form;
 }
 
 /// Functions given to the AD helpers must return exactly their argument's scalar type:

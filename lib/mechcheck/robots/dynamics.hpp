@@ -234,6 +234,50 @@ struct robot_lagrangian {
   }
 };
 
+/// H(q, p) = p^T M(q)^-1 p / 2 + V(q) of a robot: the Legendre transform of L = T - V with
+/// T = qdot^T M qdot / 2 (notes eqs 245-255), in any scalar S. M comes from the kinetic
+/// energy by polarization -- T is quadratic in qdot, so M_ii = 2 T(e_i) and M_ij = T(e_i + e_j)
+/// - T(e_i) - T(e_j) -- and no AD layer is spent on it: the solvers of a reference
+/// differentiate H twice more, and Eigen's AD allows two layers over multiprecision types.
+template <class T>
+struct robot_hamiltonian {
+  const robot_model<T>* model;
+
+  template <class S>
+  dynamic_matrix<S> mass_matrix(const dynamic_vector<S>& q) const {
+    using R = real_type_t<S>;
+    const robot_lagrangian<T> lag{model};
+    const Eigen::Index n = q.size();
+    const auto kinetic = [&](Eigen::Index i, Eigen::Index j) {  // T(e_i + e_j), or T(e_i) for j < 0
+      dynamic_vector<S> v = dynamic_vector<S>::Constant(n, lift<S>(R(0)));
+      v(i) = lift<S>(R(1));
+      if (j >= 0) v(j) = lift<S>(R(1));
+      return lag.energies(q, v).first;
+    };
+    std::vector<S> diagonal;
+    for (Eigen::Index i = 0; i < n; ++i) diagonal.push_back(kinetic(i, -1));
+    dynamic_matrix<S> m(n, n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      m(i, i) = diagonal[std::size_t(i)] + diagonal[std::size_t(i)];
+      for (Eigen::Index j = 0; j < i; ++j) {
+        const S both = kinetic(i, j);
+        m(i, j) = both - diagonal[std::size_t(i)] - diagonal[std::size_t(j)];
+        m(j, i) = m(i, j);
+      }
+    }
+    return m;
+  }
+
+  template <class S>
+  S operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& p) const {
+    using R = real_type_t<S>;
+    const robot_lagrangian<T> lag{model};
+    const S kinetic = inverse_quadratic_form(mass_matrix(q), p, "robot " + model->description.name);
+    const S potential = lag.energies(q, dynamic_vector<S>(dynamic_vector<S>::Constant(q.size(), lift<S>(R(0))))).second;
+    return kinetic * half<S>() + potential;
+  }
+};
+
 /// The equations of motion at one state: M, h, and the energies.
 template <class T>
 struct motion_terms {

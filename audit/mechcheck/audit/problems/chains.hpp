@@ -136,32 +136,9 @@ struct planar_chain {
 
   template <class S>
   S operator()(const dynamic_vector<S>& q, const dynamic_vector<S>& p) const {
-    // p^T M^-1 p = |L^-1 p|^2 with M = L L^T (Cholesky, in S: Eigen's decompositions do not
-    // compile over the AD scalars; M is positive definite for positive masses and moments).
+    // p^T M^-1 p (M is positive definite for positive masses and moments).
     using R = real_type_t<S>;
-    using std::sqrt;
-    const dynamic_matrix<S> m = mass_matrix(q);
-    const Eigen::Index n = q.size();
-    dynamic_matrix<S> l = dynamic_matrix<S>::Constant(n, n, lift<S>(R(0)));
-    for (Eigen::Index j = 0; j < n; ++j) {
-      S d = m(j, j);
-      for (Eigen::Index k = 0; k < j; ++k) d -= l(j, k) * l(j, k);
-      if (!(innermost_value(d) > 0)) throw singular_error("planar_chain: the mass matrix is not positive definite");
-      l(j, j) = sqrt(d);
-      for (Eigen::Index i = j + 1; i < n; ++i) {
-        S s = m(i, j);
-        for (Eigen::Index k = 0; k < j; ++k) s -= l(i, k) * l(j, k);
-        l(i, j) = s / l(j, j);
-      }
-    }
-    S kinetic = lift<S>(R(0));
-    dynamic_vector<S> y(n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      S s = p(i);
-      for (Eigen::Index k = 0; k < i; ++k) s -= l(i, k) * y(k);
-      y(i) = s / l(i, i);
-      kinetic += y(i) * y(i);
-    }
+    const S kinetic = inverse_quadratic_form(mass_matrix(q), p, "planar_chain");
     return kinetic / lift<S>(R(2)) + potential(q);
   }
 };
