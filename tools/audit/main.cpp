@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <string>
@@ -216,11 +217,21 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   app.add_option("--robots", dynamics_robots, "with --dynamics: random robots (or states of --urdf robots; default 100)")
       ->check(CLI::Range(1, 1000000));
-  app.add_option("--seed", dynamics_seed, "with --dynamics: the seed of the random robots (default 1)");
+  app.add_option("--seed", dynamics_seed, "the seed of the random robots (--dynamics, --engine-robots; default 1)");
   std::vector<std::string> engine_scenarios, scenario_names;
   for (const auto& s : audit::scenarios()) scenario_names.push_back(s.name);
-  app.add_option("--scenario", engine_scenarios, "engine scenarios (default all)")
-      ->check(CLI::IsMember(scenario_names));
+  int engine_robots = 0, engine_robot_links = 3;
+  app.add_option("--engine-robots", engine_robots,
+                 "with --engine: N random robots (chains and trees, revolute, prismatic and fixed joints, skew "
+                 "axes, rotated inertias; --seed) as scenarios beside the hand-built ones, named robot_<seed>_<k>; "
+                 "each one's URDF is written to the report's robots/ folder")
+      ->check(CLI::Range(0, 1000));
+  app.add_option("--engine-robot-links", engine_robot_links,
+                 "with --engine-robots: at most this many links a robot (1 to 8, default 3; the reference's cost "
+                 "grows with the square of the moving joints)")
+      ->check(CLI::Range(1, 8));
+  app.add_option("--scenario", engine_scenarios,
+                 "engine scenarios, as shell patterns (default all; 'robot_*' the --engine-robots alone)");
   long long engine_long_run_steps = 100000;
   app.add_option("--engine-long-run-steps", engine_long_run_steps, "steps of the engines' long run (0: none)")
       ->check(CLI::Range(0LL, 100000000LL));
@@ -243,6 +254,7 @@ int main(int argc, char** argv) {
   try {
     for (const auto& [option, patterns] : {std::pair{"--stepper", &steppers}, std::pair{"--driver", &driver_patterns},
                                            std::pair{"--engine", &engine_patterns}, std::pair{"--dynamics", &dynamics_patterns},
+                                           std::pair{"--scenario", &engine_scenarios},
                                            std::pair{"--require", &require},
                                            std::pair{"--require-measured", &require_measured}})
       for (const auto& p : *patterns) audit_tool::check_pattern(option, p);
@@ -480,9 +492,29 @@ int main(int argc, char** argv) {
     std::vector<audit::engine_integrator> engines = all_engines;
     std::erase_if(engines, [&](const audit::engine_integrator& e) { return !audit_tool::matches(engine_patterns, e.name); });
     std::vector<audit::engine_audit> engine_audits;
+    // The random robots drawn once: every integrator shares their certified references.
+    const std::vector<audit::scenario> robots =
+        audit::random_robot_scenarios(engine_robots, dynamics_seed, engine_robot_links);
+    // The scenarios' patterns as names: each must name one at least.
+    std::vector<std::string> scenarios_named;
+    for (const auto& pattern : engine_scenarios) {
+      std::vector<std::string> all = scenario_names;
+      for (const auto& r : robots) all.push_back(r.name);
+      std::string known;
+      bool any = false;
+      for (const auto& n : all) {
+        known += " " + n;
+        if (audit_tool::matches({pattern}, n)) any = true, scenarios_named.push_back(n);
+      }
+      if (!any) {
+        std::cerr << "mechcheck-audit: --scenario " << pattern << " names no scenario (known:" << known << ")\n";
+        return 1;
+      }
+    }
     for (const auto& e : engines) {
       audit::engine_options eopt;
-      eopt.scenarios = engine_scenarios;
+      eopt.scenarios = scenarios_named;
+      eopt.robots = robots;
       eopt.long_run_steps = engine_long_run_steps;
       eopt.timing = timing;
       if (!quiet) eopt.progress = progress;
@@ -498,7 +530,20 @@ int main(int argc, char** argv) {
                       [&](const audit::engine_integrator& e) { return e.name.rfind(engine.engine + "::", 0) == 0; }))
         for (auto& a : audit::audit_shapes(engine)) shape_audits.push_back(std::move(a));
     audit::print_engines(std::cout, engine_audits, shape_audits);
-    if (!report_files([&] { return audit::write_engine_report(output, engine_audits, shape_audits); })) return 1;
+    if (!report_files([&] {
+          std::vector<std::string> written = audit::write_engine_report(output, engine_audits, shape_audits);
+          // Each robot as URDF, for the engines' own loaders.
+          for (const auto& s : robots) {
+            const std::filesystem::path path = std::filesystem::path(output) / "robots" / (s.name + ".urdf");
+            std::filesystem::create_directories(path.parent_path());
+            std::ofstream file(path);
+            file << audit::to_urdf(s.robot->robot);
+            if (!file) throw error("cannot write " + path.string());
+            written.push_back(path.string());
+          }
+          return written;
+        }))
+      return 1;
     std::cout << "audited " << engine_audits.size() << " engine integrators in " << static_cast<long>(elapsed() + 0.5)
               << " s\n";
     for (const auto& a : engine_audits) {

@@ -12,6 +12,7 @@
 #include "mechcheck/audit/audit.hpp"
 #include "mechcheck/audit/finite_differences.hpp"
 #include "mechcheck/audit/studies.hpp"
+#include "mechcheck/robots/dynamics.hpp"
 
 namespace mechcheck::audit {
 namespace {
@@ -95,9 +96,30 @@ engine_observation observe_multibody(const scenario& s, const body_reading& r) {
   o.constraint = c;
   return o;
 }
+
+/// A robot's observation: its joint coordinates (angles reduced to [-pi, pi]) and rates as
+/// the engine reports them, and its energy there; no momentum law, no constraint to
+/// measure (the engine integrates in the joint coordinates).
+engine_observation observe_robot(const scenario& s, const body_reading& r) {
+  const robot_start& start = *s.robot;
+  const Eigen::Index n = start.q0.size();
+  if (r.joint_q.size() != n || r.joint_v.size() != n)
+    throw dimension_error("observe: " + s.name + " has " + std::to_string(n) + " coordinates, the engine read " +
+                          std::to_string(r.joint_q.size()) + " and " + std::to_string(r.joint_v.size()) + " rates");
+  engine_observation o;
+  o.observables.resize(2 * n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    o.observables(i) = start.angular[std::size_t(i)] ? wrap_angle(r.joint_q(i)) : r.joint_q(i);
+    o.observables(n + i) = r.joint_v(i);
+  }
+  o.energy = start.energy(r.joint_q, r.joint_v);
+  o.readout = "the engine's joint coordinates";
+  return o;
+}
 }  // namespace
 
 engine_observation observe(const scenario& s, const body_reading& r) {
+  if (s.structure == body_structure::robot) return observe_robot(s, r);
   if (s.structure != body_structure::one_body) return observe_multibody(s, r);
   engine_observation o;
   const Eigen::Vector3d wb = r.rotation.transpose() * r.omega, mb = s.inertia.cwiseProduct(wb);
@@ -346,6 +368,31 @@ void reversal_of(const engine_integrator& in, const scenario& s, engine_scenario
   }
 }
 
+/// A robot scenario as the integrator's engine holds it (engine_run::held_robot): the
+/// reference and the energy of the robot the engine computes with; the start, and the robot
+/// the engine is built from, unchanged. `held` says how far the two robots' mass matrices
+/// are apart at the start (Frobenius norms, relative).
+scenario as_held(const engine_integrator& in, const scenario& s, std::string& held) {
+  if (s.structure != body_structure::robot) return s;
+  const std::optional<robots::robot> r = in.start(s)->held_robot();
+  if (!r) return s;
+  const robot_start& given = *s.robot;
+  scenario h = robot_scenario(s.name, *r, given.q0, given.qdot0, s.t_end);
+  auto start = std::make_shared<robot_start>(*h.robot);
+  start->robot = given.robot;
+  h.robot = start;
+  const robots::robot_model<double> m_given(given.robot), m_held(*r);
+  const Eigen::MatrixXd a = robots::robot_hamiltonian<double>{&m_given}.mass_matrix<double>(given.q0),
+                        b = robots::robot_hamiltonian<double>{&m_held}.mass_matrix<double>(given.q0);
+  char buf[200];
+  std::snprintf(buf, sizeof buf,
+                "measured against the robot the engine holds (its mass matrix at the start %.2g of the given "
+                "robot's away, relative)",
+                (b - a).norm() / a.norm());
+  held = buf;
+  return h;
+}
+
 constexpr double det_resolution_needed = 1e-6;
 
 verdict judge_symplectic(const engine_integrator& in, const std::vector<engine_scenario_audit>& all) {
@@ -420,7 +467,8 @@ std::optional<long_run> energy_run(const scenario& s, const engine_scenario_audi
 engine_audit audit_engine(const engine_integrator& in, const engine_options& opt) {
   if (in.name.empty() || !in.start) throw domain_error("audit_engine: the integrator needs a name and a start function");
   // A name that matches no scenario would audit nothing: refuse it with the valid names.
-  const std::vector<scenario> all = scenarios();
+  std::vector<scenario> all = scenarios();
+  all.insert(all.end(), opt.robots.begin(), opt.robots.end());
   for (const auto& name : opt.scenarios)
     if (std::none_of(all.begin(), all.end(), [&](const scenario& s) { return s.name == name; })) {
       std::string known;
@@ -433,16 +481,20 @@ engine_audit audit_engine(const engine_integrator& in, const engine_options& opt
   out.declared = in.declared;
   std::vector<problem_audit> problems, energy_problems;
   std::vector<std::string> class_names;
-  for (const scenario& s : all) {
+  for (const scenario& given : all) {
     if (!opt.scenarios.empty() &&
-        std::find(opt.scenarios.begin(), opt.scenarios.end(), s.name) == opt.scenarios.end())
+        std::find(opt.scenarios.begin(), opt.scenarios.end(), given.name) == opt.scenarios.end())
       continue;
+    scenario s = given;
     if (opt.progress) opt.progress(in.name + " on " + s.name);
     engine_scenario_audit a;
     a.scenario = s.name;
     try {
+      if (s.structure == body_structure::robot && !in.robots)
+        throw scenario_refused(in.name + ": the adapter builds no robot (a tree of revolute and prismatic joints)");
       if (s.structure != body_structure::one_body && !in.multibody)
         throw scenario_refused(in.name + ": the adapter builds one-body scenarios only");
+      s = as_held(in, given, a.held);
       order_of(in, s, opt, a);
       run_long(in, s, opt, a);
       jacobian_of(in, s, a);

@@ -120,6 +120,11 @@ class engine_run {
   /// closed by a soft constraint): the order studies then measure the distance between the
   /// models and say nothing of the integrator's order, which they do not judge.
   virtual std::string model_differs() const { return {}; }
+  /// A robot scenario: the robot the engine computes with where its model builder changed
+  /// the one given (MuJoCo holds each inertia as principal moments and a rotation found by
+  /// an iteration of its own). The studies then measure against that robot's reference,
+  /// and the report gives the distance between the two robots' mass matrices at the start.
+  virtual std::optional<robots::robot> held_robot() const { return std::nullopt; }
 };
 
 /// An engine integrator: how to start a run of a scenario (throws scenario_refused).
@@ -133,6 +138,10 @@ struct engine_integrator {
   /// The adapter builds multibody scenarios (chains, the loop, free bodies); without it
   /// they are refused before start is called.
   bool multibody = false;
+  /// The adapter builds robot scenarios (body_structure::robot: trees of revolute and
+  /// prismatic joints from a robots::robot, read back in its joint coordinates); without it
+  /// they are refused before start is called.
+  bool robots = false;
 };
 
 /// The audit of one integrator on one scenario.
@@ -145,6 +154,9 @@ struct engine_scenario_audit {
   std::vector<std::pair<std::string, order_study>> classes;
   std::string readout;  ///< where the hinge observables came from (engine_observation)
   std::string model_differs;  ///< engine_run::model_differs: the order studies not judged
+  /// A robot scenario measured against the robot the engine holds (engine_run::held_robot):
+  /// how far its mass matrix is from the given robot's at the start; empty otherwise.
+  std::string held;
   /// Constraint violation of a jointed body: after the first step of h_long, and the
   /// largest over the long run, with the growth exponent of the anchor's separation.
   std::optional<constraint_violation> constraint_first, constraint_max;
@@ -209,6 +221,10 @@ struct engine_audit {
 
 struct engine_options {
   std::vector<std::string> scenarios;  ///< names; empty: all
+  /// Robot scenarios audited after the hand-built ones (random_robot_scenarios,
+  /// robot_scenario). Pass the same objects to every integrator: each certifies its
+  /// reference once, when first asked.
+  std::vector<scenario> robots;
   long long long_run_steps = 100000;
   long max_study_steps = 1 << 14;  // h = t_end / 16384: ten halvings from the coarsest run
   /// Time the long run's steps (seconds_per_step, the work-precision plot): not

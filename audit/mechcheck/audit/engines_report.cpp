@@ -81,6 +81,7 @@ void print_engines(std::ostream& out, const std::vector<engine_audit>& audits, c
       if (!s.failure.empty()) out << "    failed: " << s.failure << "\n";
       if (s.constraint_max) out << "    constraint: " << constraint_text(s) << "\n";
       if (!s.model_differs.empty()) out << "    order not judged: " << s.model_differs << "\n";
+      if (!s.held.empty()) out << "    " << s.scenario << ": " << s.held << "\n";
     }
     out << "  order: declared " << a.order.declared << ", measured " << a.order.measured << ": "
         << outcome_name(a.order.result) << (a.order.needs.empty() ? "" : " (needs " + a.order.needs + ")") << "\n";
@@ -125,6 +126,7 @@ std::string engines_to_json(const std::vector<engine_audit>& audits, const std::
       if (!s.failure.empty()) js["failure"] = s.failure;
       if (!s.readout.empty()) js["readout"] = s.readout;
       if (!s.model_differs.empty()) js["model_differs"] = s.model_differs;
+      if (!s.held.empty()) js["held"] = s.held;
       for (const auto& p : s.global.points)
         js["global"].push_back({{"h", p.h}, {"error", std::isfinite(p.error) ? json(p.error) : json(sci(p.error))}});
       js["global_fit"] = {{"value", s.global.fit.value}, {"spread", s.global.fit.spread}, {"used", s.global.fit.used}};
@@ -192,7 +194,8 @@ std::string engines_to_markdown(const std::vector<engine_audit>& audits, const s
          << " | "
          << (s.seconds_per_step > 0 ? detail::fixed(s.seconds_per_step * 1e6) : std::string("-")) << " | "
          << (s.readout.empty() ? "-" : s.readout)
-         << (s.model_differs.empty() ? "" : "; order not judged: " + s.model_differs) << " |\n";
+         << (s.model_differs.empty() ? "" : "; order not judged: " + s.model_differs)
+         << (s.held.empty() ? "" : "; " + s.held) << " |\n";
   md << "\n";
   if (!shapes.empty()) {
     md << "## Inertia of primitive shapes\n\nPrincipal moments the engine computes from mass and dimensions "

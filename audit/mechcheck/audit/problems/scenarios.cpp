@@ -6,12 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <mutex>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 
 #include "mechcheck/audit/model.hpp"
+#include "mechcheck/audit/problems/certified.hpp"
 #include "mechcheck/audit/problems/chains.hpp"
 #include "mechcheck/central/kepler.hpp"
 #include "mechcheck/reference/pendulum.hpp"
@@ -315,35 +315,6 @@ std::string exact_text(double x) {
   return buf;
 }
 
-/// The observables at t of a Hamiltonian model's certified reference (model.hpp, in double:
-/// the reference of the double-rounded start the engines are given), made when first asked
-/// for; a reference certified to fewer than 20 digits is an error, not a yardstick.
-template <class H>
-std::function<Eigen::VectorXd(double)> certified(hamiltonian_model<H> model,
-                                                 std::function<Eigen::VectorXd(const state<double>&)> observables) {
-  struct lazy {
-    std::mutex mutex;
-    std::optional<problem<double>> solved;
-  };
-  auto l = std::make_shared<lazy>();
-  return [model = std::move(model), observables = std::move(observables), l](double t) -> Eigen::VectorXd {
-    std::lock_guard<std::mutex> lock(l->mutex);
-    if (!l->solved) {
-      // 25 digits: nine above the engines' double rounding, a third of the cost of 35.
-      reference_settings settings;
-      settings.options.target_digits = 25;
-      l->solved = model_problem<double>(model, settings);
-    }
-    if (t == 0) return observables(l->solved->initial);
-    const state<double> x = l->solved->exact(t);
-    const double u = l->solved->exact_uncertainty(t);
-    if (!(u <= 1e-20))
-      throw convergence_error("the reference of " + model.setup.name + " at t = " + to_text(t) +
-                              " is certified to relative " + to_text(u) + " only");
-    return observables(x);
-  };
-}
-
 model_setup setup_of(const std::string& name, const std::string& parameters, const Eigen::VectorXd& q0,
                      const Eigen::VectorXd& p0, double t_end) {
   model_setup m;
@@ -401,7 +372,7 @@ scenario chain(scenario_kind kind, std::string name, double m, double l, const s
                                               Eigen::VectorXd::Zero(n), t_end),
                                      model};
   hm.setup.separable = false;
-  s.exact = certified(hm, [model, n](const state<double>& x) {
+  s.exact = detail::certified<double>(hm, [model, n](const state<double>& x) {
     // phidot = M(phi)^-1 p; relative angles and rates.
     const Eigen::VectorXd rate = model.mass_matrix<double>(x.q).llt().solve(Eigen::VectorXd(x.p));
     Eigen::VectorXd out(2 * n);
@@ -474,7 +445,7 @@ scenario four_bar_scenario() {
                                           Eigen::VectorXd::Zero(1), s.t_end),
                                  model};
   hm.setup.separable = false;
-  s.exact = certified(hm, [model](const state<double>& x) {
+  s.exact = detail::certified<double>(hm, [model](const state<double>& x) {
     const auto c = model.at(mpfr50(x.q(0)));
     mpfr50 m = 0;
     for (int k = 0; k < 3; ++k)
@@ -527,7 +498,7 @@ scenario three_body() {
   s.classes = {{"position", 0, 9}, {"velocity", 9, 9}};
   hamiltonian_model<n_bodies> hm{setup_of(s.name, "G=1|m=1,1,1", q0, p0, s.t_end), model};
   hm.setup.separable = true;
-  s.exact = certified(hm, [model](const state<double>& y) {
+  s.exact = detail::certified<double>(hm, [model](const state<double>& y) {
     Eigen::VectorXd out(18);
     for (int k = 0; k < 3; ++k) {
       out.segment<3>(3 * k) = y.q.segment<3>(3 * k);

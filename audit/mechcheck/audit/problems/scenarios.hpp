@@ -4,7 +4,9 @@
 /// reference of its observables, and the shapes whose inertia engines compute. Every
 /// engine adapter maps them to its engine; the engine audit (engines.hpp) measures with them.
 
+#include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +14,7 @@
 #include <Eigen/Core>
 
 #include "mechcheck/core.hpp"
+#include "mechcheck/robots/robot.hpp"
 
 namespace mechcheck::audit {
 
@@ -31,6 +34,7 @@ enum class scenario_kind {
   chain5,              ///< five links hinged about y
   four_bar,            ///< a chain of three bars closed on the ground (a loop)
   three_body,          ///< three free bodies under their mutual gravitation
+  robot,               ///< a robot (robots/robot.hpp), given or drawn: its joint coordinates and rates
 };
 
 /// How a scenario's bodies are put together.
@@ -38,6 +42,7 @@ enum class body_structure {
   one_body,     ///< the scenario's own body (its fields below), held by `joint`
   chain,        ///< `links`, each hinged about world y to the one before (link 0 to the world)
   free_bodies,  ///< `links`, free, under their mutual gravitation
+  robot,        ///< `robot`: a kinematic tree in its joint coordinates (robot_start)
 };
 
 /// One body of a multibody scenario: mass, principal moments about its centre of mass
@@ -59,6 +64,19 @@ struct link {
 /// at the world point `anchor`.
 struct loop_closure {
   Eigen::Vector3d point{0, 0, 0}, anchor{0, 0, 0};
+};
+
+/// A robot scenario's robot and its start in the robot's coordinates (URDF's order of the
+/// moving joints: robots::tree::coordinate): angles of revolute and continuous joints,
+/// slides of prismatic ones, and their rates. An engine builds the tree from `robot` (its
+/// links' inertia tensors in any frame, axes in any direction) and reports its joint
+/// coordinates and rates in that order (body_reading::joint_q, joint_v).
+struct robot_start {
+  robots::robot robot;
+  Eigen::VectorXd q0, qdot0;
+  std::vector<bool> angular;  ///< per coordinate: an angle (compared modulo 2 pi)
+  /// T + V at a state, in double (robots/dynamics.hpp): the observation's energy.
+  std::function<double(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot)> energy;
 };
 
 /// How the scenario's body is held.
@@ -86,6 +104,7 @@ struct scenario {
   std::vector<link> links;          ///< chain and free bodies
   std::optional<loop_closure> loop;  ///< a chain closed on the ground
   double gravitation = 0;           ///< G between free bodies: force G m_i m_j / r^2
+  std::shared_ptr<const robot_start> robot;  ///< body_structure::robot
   joint_kind joint = joint_kind::free;
   double mass = 1;
   Eigen::Vector3d inertia{1, 1, 1};
@@ -120,6 +139,25 @@ struct scenario {
 
 /// The scenarios every engine is asked for.
 std::vector<scenario> scenarios();
+
+/// A robot released at (q0, qdot0) under its own gravity, observed in its joint coordinates
+/// and rates at t_end (one class, "joint coordinates", as the chains), against the
+/// certified reference of its Hamiltonian H = p^T M^-1 p / 2 + V (robots::robot_hamiltonian,
+/// the Legendre transform of L = T - V, notes eqs 245-255; model.hpp solves it in mpfr50
+/// to 25 digits when first asked, from p0 = M(q0) qdot0).
+/// Energy is conserved (no damping, no limits); momentum is not (the base is fixed). Its
+/// scale: max(1, |(q0, qdot0)|). Throws robots::robot_error for a robot that is not one
+/// (robots::validate), domain_error for one without a moving joint, dimension_error for a
+/// start of another size.
+scenario robot_scenario(std::string name, const robots::robot& r, const Eigen::VectorXd& q0,
+                        const Eigen::VectorXd& qdot0, double t_end = 1);
+
+/// `count` random robots (generators::random_robots: 1 to max_links links, chains and
+/// trees, revolute, continuous, prismatic and fixed joints, axes in any direction, rotated
+/// inertias) as scenarios named robot_<seed>_<k>, each released at a random start (angles
+/// in [-pi, pi], slides in [-1, 1], rates in [-2, 2]); the same seed gives the same robots.
+/// A drawn robot without a moving joint gets its first joint revolute.
+std::vector<scenario> random_robot_scenarios(int count, std::uint64_t seed, int max_links = 3);
 
 /// A hinge scenario (pendulum) started at angle theta and rate thetadot instead of its own
 /// initial state: the map of one step in (theta, thetadot) for the Jacobian study.
