@@ -1,4 +1,5 @@
 #include "mechcheck/audit/adapters/bullet.hpp"
+#include "mechcheck/audit/adapters/detail/bullet_robot.hpp"
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
@@ -235,6 +236,10 @@ class multibody_run final : public engine_run {
       build_chain(s);
       return;
     }
+    if (s.structure == body_structure::robot) {
+      build_robot(*s.robot);
+      return;
+    }
     body_ = std::make_unique<btMultiBody>(1, 1, btVector3(1, 1, 1), true, false);
     const btQuaternion none(0, 0, 0, 1);
     if (s.joint == joint_kind::hinge_y) {
@@ -278,12 +283,22 @@ class multibody_run final : public engine_run {
     const body_reading r = read();
     bool finite = r.position.allFinite() && r.omega.allFinite();
     for (const body_frame& f : r.links) finite = finite && f.position.allFinite() && f.omega.allFinite();
+    finite = finite && r.joint_q.allFinite() && r.joint_v.allFinite();
     if (!finite)
       throw non_finite_error(std::string(name) + ": step " + std::to_string(steps_) + ": the link's state is not finite");
   }
 
   body_reading read() const override {
     body_reading r;
+    if (s_.structure == body_structure::robot) {  // the joints' coordinates in the robot's order
+      const Eigen::Index n = Eigen::Index(coordinate_.size());
+      r.joint_q.resize(n);
+      r.joint_v.resize(n);
+      for (Eigen::Index c = 0; c < n; ++c)
+        r.joint_q(c) = body_->getJointPos(coordinate_[std::size_t(c)]),
+        r.joint_v(c) = body_->getJointVel(coordinate_[std::size_t(c)]);
+      return r;
+    }
     if (s_.structure == body_structure::chain) {
       const int n = body_->getNumLinks();
       btAlignedObjectArray<btVector3> omega, v;
@@ -363,7 +378,24 @@ class multibody_run final : public engine_run {
     }
   }
 
+  /// A robot: the btMultiBody of the dynamics adapter (build_robot_multibody), the world's
+  /// gravity the robot's, the start set per coordinate.
+  void build_robot(const robot_start& r) {
+    world_->setGravity(bt(r.robot.gravity));
+    robot_multibody made = build_robot_multibody(r.robot);
+    body_ = std::move(made.body);
+    coordinate_ = made.coordinate;
+    body_->setCanSleep(false);
+    world_->addMultiBody(body_.get());
+    for (std::size_t c = 0; c < coordinate_.size(); ++c) {
+      body_->setJointPos(coordinate_[c], r.q0(Eigen::Index(c)));
+      body_->setJointVel(coordinate_[c], r.qdot0(Eigen::Index(c)));
+    }
+    body_->updateCollisionObjectWorldTransforms(scratch_q_, scratch_m_);
+  }
+
   scenario s_;
+  std::vector<int> coordinate_;  ///< a robot: per coordinate, its btMultiBody link
   std::unique_ptr<btCollisionShape> shape_;
   std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;
   std::unique_ptr<btMultiBodyPoint2Point> loop_;
@@ -441,10 +473,11 @@ std::vector<engine_integrator> integrators() {
   m.name = multibody_run::name;
   m.origin = "Bullet " + version() + " (bullet-float64), btMultiBody on a fixed base (setupRevolute "
              "for a hinge, setupSpherical for a ball joint, a chain of revolute links, a loop closed by "
-             "btMultiBodyPoint2Point; damping 0) in a btMultiBodyDynamicsWorld, stepSimulation(h, 0); Bullet states "
+             "btMultiBodyPoint2Point; a robot as the dynamics audit builds it, on its links' principal axes; damping 0) in a btMultiBodyDynamicsWorld, stepSimulation(h, 0); Bullet states "
              "no order; free bodies refused";
   m.start = [](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<multibody_run>(s); };
   m.multibody = true;
+  m.robots = true;
   out.push_back(std::move(m));
   return out;
 }

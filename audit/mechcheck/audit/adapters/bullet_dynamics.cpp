@@ -9,6 +9,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "mechcheck/audit/adapters/bullet.hpp"
+#include "mechcheck/audit/adapters/detail/bullet_robot.hpp"
 #include "mechcheck/robots/dynamics.hpp"
 
 namespace mechcheck::audit::bullet {
@@ -49,59 +50,66 @@ principal principal_of(const robots::link& l) {
   return p;
 }
 
+}  // namespace
+
+robot_multibody build_robot_multibody(const robots::robot& r) {
+  robot_multibody out;
+  const robots::tree t = robots::validate(r);
+  std::vector<principal> frame(r.links.size());
+  for (std::size_t k = 0; k < r.links.size(); ++k) frame[k] = principal_of(r.links[k]);
+  const principal& base = frame[std::size_t(t.root)];
+  out.body = std::make_unique<btMultiBody>(static_cast<int>(t.order.size()), base.mass, bt(base.moments), true, false);
+  // The base is the root link, fixed at the world's origin: its Bullet frame at its centre
+  // of mass, turned onto its principal axes (world to base: P^T).
+  out.body->setBasePos(bt(base.com));
+  out.body->setWorldToBaseRot(quaternion(base.axes.transpose()));
+  std::vector<int> index(r.links.size(), -1);  // per link, its btMultiBody link (-1: the base)
+  out.coordinate.assign(std::size_t(t.dofs), -1);
+  for (std::size_t i = 0; i < t.order.size(); ++i) {
+    const int k = t.order[i];
+    const robots::joint& j = r.joints[std::size_t(k)];
+    const int parent_link = t.parent_link[std::size_t(k)], child_link = t.child_link[std::size_t(k)];
+    const principal& parent = frame[std::size_t(parent_link)];
+    const principal& child = frame[std::size_t(child_link)];
+    const Eigen::Matrix3d origin = robots::rpy_rotation<double>(j.origin.rpy);
+    // Points in the parent's Bullet frame to this one's: P_child^T R_origin^T P_parent.
+    const btQuaternion parent_to_this = quaternion(child.axes.transpose() * origin.transpose() * parent.axes);
+    // From the parent's centre of mass to the joint (the child's origin), in the parent's
+    // Bullet frame; from the joint to this centre of mass, in this one's.
+    const btVector3 to_pivot = bt(parent.axes.transpose() * (j.origin.xyz - parent.com));
+    const btVector3 to_com = bt(child.axes.transpose() * child.com);
+    const int link = static_cast<int>(i), parent_index = index[std::size_t(parent_link)];
+    switch (j.type) {
+      case robots::joint_type::revolute:
+      case robots::joint_type::continuous:
+        out.body->setupRevolute(link, child.mass, bt(child.moments), parent_index, parent_to_this,
+                                bt(child.axes.transpose() * j.axis), to_pivot, to_com, true);
+        break;
+      case robots::joint_type::prismatic:
+        out.body->setupPrismatic(link, child.mass, bt(child.moments), parent_index, parent_to_this,
+                                 bt(child.axes.transpose() * j.axis), to_pivot, to_com, true);
+        break;
+      case robots::joint_type::fixed:
+        out.body->setupFixed(link, child.mass, bt(child.moments), parent_index, parent_to_this, to_pivot, to_com);
+        break;
+    }
+    index[std::size_t(child_link)] = link;
+    if (const int c = t.coordinate[std::size_t(k)]; c >= 0) out.coordinate[std::size_t(c)] = link;
+    out.mass.push_back(child.mass);
+  }
+  out.body->finalizeMultiDof();
+  // btMultiBody's defaults damp every body (linear and angular damping 0.04, btMultiBody.cpp):
+  // off, so that the equations are the Lagrangian's. The gyroscopic term stays on (default).
+  out.body->setLinearDamping(0);
+  out.body->setAngularDamping(0);
+  return out;
+}
+
+namespace {
 class model final : public dynamics_model {
  public:
-  explicit model(const robots::robot& r) {
-    const robots::tree t = robots::validate(r);
-    n_ = t.dofs;
-    std::vector<principal> frame(r.links.size());
-    for (std::size_t k = 0; k < r.links.size(); ++k) frame[k] = principal_of(r.links[k]);
-    const principal& base = frame[std::size_t(t.root)];
-    body_ = std::make_unique<btMultiBody>(static_cast<int>(t.order.size()), base.mass, bt(base.moments), true, false);
-    // The base is the root link, fixed at the world's origin: its Bullet frame at its centre
-    // of mass, turned onto its principal axes (world to base: P^T).
-    body_->setBasePos(bt(base.com));
-    body_->setWorldToBaseRot(quaternion(base.axes.transpose()));
-    std::vector<int> index(r.links.size(), -1);  // per link, its btMultiBody link (-1: the base)
-    coordinate_.assign(std::size_t(n_), -1);
-    for (std::size_t i = 0; i < t.order.size(); ++i) {
-      const int k = t.order[i];
-      const robots::joint& j = r.joints[std::size_t(k)];
-      const int parent_link = t.parent_link[std::size_t(k)], child_link = t.child_link[std::size_t(k)];
-      const principal& parent = frame[std::size_t(parent_link)];
-      const principal& child = frame[std::size_t(child_link)];
-      const Eigen::Matrix3d origin = robots::rpy_rotation<double>(j.origin.rpy);
-      // Points in the parent's Bullet frame to this one's: P_child^T R_origin^T P_parent.
-      const btQuaternion parent_to_this = quaternion(child.axes.transpose() * origin.transpose() * parent.axes);
-      // From the parent's centre of mass to the joint (the child's origin), in the parent's
-      // Bullet frame; from the joint to this centre of mass, in this one's.
-      const btVector3 to_pivot = bt(parent.axes.transpose() * (j.origin.xyz - parent.com));
-      const btVector3 to_com = bt(child.axes.transpose() * child.com);
-      const int link = static_cast<int>(i), parent_index = index[std::size_t(parent_link)];
-      switch (j.type) {
-        case robots::joint_type::revolute:
-        case robots::joint_type::continuous:
-          body_->setupRevolute(link, child.mass, bt(child.moments), parent_index, parent_to_this,
-                               bt(child.axes.transpose() * j.axis), to_pivot, to_com, true);
-          break;
-        case robots::joint_type::prismatic:
-          body_->setupPrismatic(link, child.mass, bt(child.moments), parent_index, parent_to_this,
-                                bt(child.axes.transpose() * j.axis), to_pivot, to_com, true);
-          break;
-        case robots::joint_type::fixed:
-          body_->setupFixed(link, child.mass, bt(child.moments), parent_index, parent_to_this, to_pivot, to_com);
-          break;
-      }
-      index[std::size_t(child_link)] = link;
-      if (const int c = t.coordinate[std::size_t(k)]; c >= 0) coordinate_[std::size_t(c)] = link;
-      mass_.push_back(child.mass);
-    }
-    body_->finalizeMultiDof();
-    // btMultiBody's defaults damp every body (linear and angular damping 0.04, btMultiBody.cpp):
-    // off, so that the equations are the Lagrangian's. The gyroscopic term stays on (default).
-    body_->setLinearDamping(0);
-    body_->setAngularDamping(0);
-    gravity_ = bt(r.gravity);
+  explicit model(const robots::robot& r) : made_(build_robot_multibody(r)), gravity_(bt(r.gravity)) {
+    n_ = static_cast<int>(made_.coordinate.size());
   }
 
   std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd&) override { return std::nullopt; }
@@ -117,26 +125,24 @@ class model final : public dynamics_model {
   std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                                          const Eigen::VectorXd& tau) override {
     for (int c = 0; c < n_; ++c) {
-      body_->setJointPos(coordinate_[std::size_t(c)], q(c));
-      body_->setJointVel(coordinate_[std::size_t(c)], qdot(c));
+      made_.body->setJointPos(made_.coordinate[std::size_t(c)], q(c));
+      made_.body->setJointVel(made_.coordinate[std::size_t(c)], qdot(c));
     }
-    body_->clearForcesAndTorques();
-    for (int l = 0; l < body_->getNumLinks(); ++l) body_->addLinkForce(l, gravity_ * mass_[std::size_t(l)]);
-    for (int c = 0; c < n_; ++c) body_->addJointTorque(coordinate_[std::size_t(c)], tau(c));
+    made_.body->clearForcesAndTorques();
+    for (int l = 0; l < made_.body->getNumLinks(); ++l) made_.body->addLinkForce(l, gravity_ * made_.mass[std::size_t(l)]);
+    for (int c = 0; c < n_; ++c) made_.body->addJointTorque(made_.coordinate[std::size_t(c)], tau(c));
     btAlignedObjectArray<btScalar> scratch_r;
     btAlignedObjectArray<btVector3> scratch_v;
     btAlignedObjectArray<btMatrix3x3> scratch_m;
-    body_->computeAccelerationsArticulatedBodyAlgorithmMultiDof(0, scratch_r, scratch_v, scratch_m, false, false, false);
+    made_.body->computeAccelerationsArticulatedBodyAlgorithmMultiDof(0, scratch_r, scratch_v, scratch_m, false, false, false);
     Eigen::VectorXd out(n_);
     for (int c = 0; c < n_; ++c)
-      out(c) = scratch_r[body_->getNumDofs() + 6 + body_->getLink(coordinate_[std::size_t(c)]).m_dofOffset];
+      out(c) = scratch_r[made_.body->getNumDofs() + 6 + made_.body->getLink(made_.coordinate[std::size_t(c)]).m_dofOffset];
     return out;
   }
 
  private:
-  std::unique_ptr<btMultiBody> body_;
-  std::vector<int> coordinate_;  ///< per coordinate, its btMultiBody link
-  std::vector<double> mass_;     ///< per btMultiBody link
+  robot_multibody made_;
   btVector3 gravity_;
   int n_ = 0;
 };

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "mechcheck/audit/adapters/dart_engine.hpp"
+#include "mechcheck/audit/adapters/detail/dart_robot.hpp"
 #include "mechcheck/robots/dynamics.hpp"
 
 namespace mechcheck::audit::dart_engine {
@@ -43,61 +44,69 @@ typename J::Properties joint_properties(const std::string& name, const Eigen::Is
   return p;
 }
 
+}  // namespace
+
+SkeletonPtr robot_skeleton(const robots::robot& r, coordinate_order& order) {
+  const SkeletonPtr skeleton = Skeleton::create(r.name);
+  const robots::tree t = robots::validate(r);
+  const int dofs = t.dofs;
+  skeleton->setGravity(r.gravity);
+  std::vector<BodyNode*> body(r.links.size(), nullptr);
+  const robots::link& root = r.links[std::size_t(t.root)];
+  BodyNode::Properties root_body;
+  root_body.mName = root.name;
+  body[std::size_t(t.root)] = skeleton
+                                  ->createJointAndBodyNodePair<WeldJoint>(
+                                      nullptr, joint_properties<WeldJoint>(root.name + "_world", Eigen::Isometry3d::Identity()),
+                                      root_body)
+                                  .second;
+  // The root is welded to the world: its inertia never enters the equations. A massless
+  // root keeps DART's default (mass 1), which DART does not warn about as it does about 0.
+  if (root.body) body[std::size_t(t.root)]->setInertia(inertia_of(root));
+  order.order.assign(std::size_t(dofs), -1);
+  for (const int k : t.order) {
+    const robots::joint& j = r.joints[std::size_t(k)];
+    BodyNode* parent = body[std::size_t(t.parent_link[std::size_t(k)])];
+    const robots::link& child = r.links[std::size_t(t.child_link[std::size_t(k)])];
+    BodyNode::Properties child_body;
+    child_body.mName = child.name;
+    const Eigen::Isometry3d origin = isometry(j.origin);
+    std::pair<Joint*, BodyNode*> made;
+    switch (j.type) {
+      case robots::joint_type::revolute:
+      case robots::joint_type::continuous: {
+        auto p = joint_properties<RevoluteJoint>(j.name, origin);
+        p.mAxis = j.axis;
+        made = skeleton->createJointAndBodyNodePair<RevoluteJoint>(parent, p, child_body);
+        break;
+      }
+      case robots::joint_type::prismatic: {
+        auto p = joint_properties<PrismaticJoint>(j.name, origin);
+        p.mAxis = j.axis;
+        made = skeleton->createJointAndBodyNodePair<PrismaticJoint>(parent, p, child_body);
+        break;
+      }
+      case robots::joint_type::fixed:
+        made = skeleton->createJointAndBodyNodePair<WeldJoint>(parent, joint_properties<WeldJoint>(j.name, origin),
+                                                                child_body);
+        break;
+    }
+    made.second->setInertia(inertia_of(child));
+    body[std::size_t(t.child_link[std::size_t(k)])] = made.second;
+    if (const int c = t.coordinate[std::size_t(k)]; c >= 0)
+      order.order[made.first->getDof(0)->getIndexInSkeleton()] = c;
+  }
+  if (static_cast<int>(skeleton->getNumDofs()) != dofs)
+    throw error("dart: the Skeleton has " + std::to_string(skeleton->getNumDofs()) + " degrees of freedom, the robot " +
+                std::to_string(dofs));
+  return skeleton;
+}
+
+namespace {
 class dart_model final : public dynamics_model {
  public:
-  explicit dart_model(const robots::robot& r) : skeleton_(Skeleton::create(r.name)) {
-    const robots::tree t = robots::validate(r);
-    n_ = t.dofs;
-    skeleton_->setGravity(r.gravity);
-    std::vector<BodyNode*> body(r.links.size(), nullptr);
-    const robots::link& root = r.links[std::size_t(t.root)];
-    BodyNode::Properties root_body;
-    root_body.mName = root.name;
-    body[std::size_t(t.root)] = skeleton_
-                                    ->createJointAndBodyNodePair<WeldJoint>(
-                                        nullptr, joint_properties<WeldJoint>(root.name + "_world", Eigen::Isometry3d::Identity()),
-                                        root_body)
-                                    .second;
-    // The root is welded to the world: its inertia never enters the equations. A massless
-    // root keeps DART's default (mass 1), which DART does not warn about as it does about 0.
-    if (root.body) body[std::size_t(t.root)]->setInertia(inertia_of(root));
-    order_.order.assign(std::size_t(n_), -1);
-    for (const int k : t.order) {
-      const robots::joint& j = r.joints[std::size_t(k)];
-      BodyNode* parent = body[std::size_t(t.parent_link[std::size_t(k)])];
-      const robots::link& child = r.links[std::size_t(t.child_link[std::size_t(k)])];
-      BodyNode::Properties child_body;
-      child_body.mName = child.name;
-      const Eigen::Isometry3d origin = isometry(j.origin);
-      std::pair<Joint*, BodyNode*> made;
-      switch (j.type) {
-        case robots::joint_type::revolute:
-        case robots::joint_type::continuous: {
-          auto p = joint_properties<RevoluteJoint>(j.name, origin);
-          p.mAxis = j.axis;
-          made = skeleton_->createJointAndBodyNodePair<RevoluteJoint>(parent, p, child_body);
-          break;
-        }
-        case robots::joint_type::prismatic: {
-          auto p = joint_properties<PrismaticJoint>(j.name, origin);
-          p.mAxis = j.axis;
-          made = skeleton_->createJointAndBodyNodePair<PrismaticJoint>(parent, p, child_body);
-          break;
-        }
-        case robots::joint_type::fixed:
-          made = skeleton_->createJointAndBodyNodePair<WeldJoint>(parent, joint_properties<WeldJoint>(j.name, origin),
-                                                                  child_body);
-          break;
-      }
-      made.second->setInertia(inertia_of(child));
-      body[std::size_t(t.child_link[std::size_t(k)])] = made.second;
-      if (const int c = t.coordinate[std::size_t(k)]; c >= 0)
-        order_.order[made.first->getDof(0)->getIndexInSkeleton()] = c;
-    }
-    if (static_cast<int>(skeleton_->getNumDofs()) != n_)
-      throw error("dart: the Skeleton has " + std::to_string(skeleton_->getNumDofs()) + " degrees of freedom, the robot " +
-                  std::to_string(n_));
-  }
+  explicit dart_model(const robots::robot& r)
+      : skeleton_(robot_skeleton(r, order_)), n_(static_cast<int>(order_.order.size())) {}
 
   std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override {
     skeleton_->setPositions(order_.to_library(q));
@@ -129,9 +138,9 @@ class dart_model final : public dynamics_model {
   Eigen::VectorXd in_dart(const Eigen::VectorXd& x) const { return order_.to_library(x); }
   Eigen::VectorXd from_dart(const Eigen::VectorXd& x) const { return order_.from_library(x); }
 
+  coordinate_order order_;  ///< the Skeleton's degrees of freedom (filled by robot_skeleton)
   SkeletonPtr skeleton_;
   int n_ = 0;
-  coordinate_order order_;  ///< the Skeleton's degrees of freedom
 };
 }  // namespace
 

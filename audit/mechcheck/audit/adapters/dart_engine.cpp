@@ -1,4 +1,5 @@
 #include "mechcheck/audit/adapters/dart_engine.hpp"
+#include "mechcheck/audit/adapters/detail/dart_robot.hpp"
 
 #include <dart/config.hpp>
 #include <dart/constraint/BallJointConstraint.hpp>
@@ -66,6 +67,9 @@ class run final : public engine_run {
       case body_structure::chain:
         build_chain(s);
         break;
+      case body_structure::robot:
+        build_robot(*s.robot);
+        break;
       case body_structure::free_bodies:
         for (const link& l : s.links) {
           body_frame f;
@@ -110,6 +114,14 @@ class run final : public engine_run {
 
   body_reading read() const override {
     body_reading r;
+    if (s_.structure == body_structure::robot) {  // the Skeleton's coordinates in the robot's order
+      Eigen::VectorXd q(Eigen::Index(order_.order.size())), v(q.size());
+      for (std::size_t i = 0; i < order_.order.size(); ++i)
+        q(Eigen::Index(i)) = skeletons_[0]->getPosition(i), v(Eigen::Index(i)) = skeletons_[0]->getVelocity(i);
+      r.joint_q = order_.from_library(q);
+      r.joint_v = order_.from_library(v);
+      return r;
+    }
     if (s_.structure == body_structure::one_body) {
       static_cast<body_frame&>(r) = frame_of(*bodies_[0]);
       if (s_.joint == joint_kind::hinge_y) {
@@ -185,6 +197,17 @@ class run final : public engine_run {
     }
   }
 
+  /// A robot scenario: the Skeleton of the dynamics adapter (robot_skeleton), the world's
+  /// gravity the robot's, the start set one coordinate at a time in DART's order.
+  void build_robot(const robot_start& r) {
+    world_->setGravity(r.robot.gravity);
+    const SkeletonPtr skel = robot_skeleton(r.robot, order_);
+    const Eigen::VectorXd q = order_.to_library(r.q0), v = order_.to_library(r.qdot0);
+    for (std::size_t i = 0; i < order_.order.size(); ++i)
+      skel->setPosition(i, q(Eigen::Index(i))), skel->setVelocity(i, v(Eigen::Index(i)));
+    add(skel);
+  }
+
   void add(const SkeletonPtr& skel) {
     world_->addSkeleton(skel);
     skeletons_.push_back(skel);
@@ -210,6 +233,7 @@ class run final : public engine_run {
   std::vector<SkeletonPtr> skeletons_;
   std::vector<BodyNode*> bodies_;
   std::vector<Joint*> joints_;
+  coordinate_order order_;  ///< a robot's coordinates in the Skeleton
   long long steps_ = 0;
 };
 }  // namespace
@@ -223,6 +247,7 @@ std::vector<engine_integrator> integrators() {
              "dynamics and integrate the world for one step\"), World::setTimeStep(h) before each step; DART states no "
              "order";
   e.multibody = true;
+  e.robots = true;
   e.start = [](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s); };
   return {e};
 }

@@ -3,6 +3,7 @@
 
 #include <mujoco/mujoco.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -204,6 +205,10 @@ class run final : public engine_run {
     if (dexp_) integrator = mjINT_RK4;
     if (s.central != 0 && s.joint != joint_kind::free)
       throw scenario_refused(name_ + ": the central force is applied to a free body only");
+    if (s.structure == body_structure::robot) {
+      start_robot(*s.robot, integrator);
+      return;
+    }
     model_ = load(s.structure == body_structure::one_body ? mjcf(s, integrator) : mjcf_multibody(s, integrator));
     data_ = mj_makeData(model_);
     if (!data_) throw error(name_ + ": mj_makeData failed");
@@ -283,6 +288,13 @@ class run final : public engine_run {
            "compliant linkage, not the rigid one";
   }
 
+  std::optional<robots::robot> held_robot() const override {
+    if (s_.structure != body_structure::robot) return std::nullopt;
+    robots::robot r = robot_of(model_, dof_of_);
+    r.name = s_.robot->robot.name;
+    return r;
+  }
+
   body_reading read() const override {
     // The positions and velocities of the state mj_step left (its xpos and cvel are those
     // of the step's start); mj_step recomputes them all before the next step.
@@ -290,6 +302,14 @@ class run final : public engine_run {
     mj_comPos(model_, data_);
     mj_comVel(model_, data_);
     body_reading r;
+    if (s_.structure == body_structure::robot) {  // the robot's coordinates from MuJoCo's joints
+      const Eigen::Index n = static_cast<Eigen::Index>(qpos_of_.size());
+      r.joint_q.resize(n);
+      r.joint_v.resize(n);
+      for (Eigen::Index i = 0; i < n; ++i)
+        r.joint_q(i) = data_->qpos[qpos_of_[std::size_t(i)]], r.joint_v(i) = data_->qvel[dof_of_[std::size_t(i)]];
+      return r;
+    }
     if (s_.structure != body_structure::one_body) {
       for (int b = 1; b < model_->nbody; ++b) {
         body_frame f;
@@ -321,9 +341,39 @@ class run final : public engine_run {
   }
 
  private:
+  /// A robot scenario: the model of robot_mjcf (the dynamics adapter's, mujoco_dynamics.cpp)
+  /// with the integrator set on mjModel::opt, each coordinate at its joint's qpos and dof.
+  void start_robot(const robot_start& r, int integrator) {
+    try {
+      model_ = load(robot_mjcf(r.robot));
+    } catch (const error& e) {  // a model MuJoCo's compiler refuses (an inertia at the triangle bound)
+      std::string why = e.what();
+      std::replace(why.begin(), why.end(), '\n', ' ');
+      throw scenario_refused(name_ + ": " + why);
+    }
+    model_->opt.integrator = integrator;
+    data_ = mj_makeData(model_);
+    if (!data_) throw error(name_ + ": mj_makeData failed");
+    const robots::tree t = robots::validate(r.robot);
+    qpos_of_.assign(std::size_t(t.dofs), 0);
+    dof_of_ = qpos_of_;
+    for (std::size_t j = 0; j < r.robot.joints.size(); ++j) {
+      const int c = t.coordinate[j];
+      if (c < 0) continue;
+      const int id = mj_name2id(model_, mjOBJ_JOINT, r.robot.joints[j].name.c_str());
+      if (id < 0) throw error(name_ + ": the model has no joint " + r.robot.joints[j].name);
+      qpos_of_[std::size_t(c)] = model_->jnt_qposadr[id];
+      dof_of_[std::size_t(c)] = model_->jnt_dofadr[id];
+      data_->qpos[model_->jnt_qposadr[id]] = r.q0(c);
+      data_->qvel[model_->jnt_dofadr[id]] = r.qdot0(c);
+    }
+    mj_forward(model_, data_);
+  }
+
   scenario s_;
   std::string name_;
   bool dexp_ = false;
+  std::vector<int> qpos_of_, dof_of_;  ///< a robot's coordinates: their qpos and dof addresses
   mjModel* model_ = nullptr;
   mjData* data_ = nullptr;
   long long steps_ = 0;
@@ -395,6 +445,7 @@ std::vector<engine_integrator> integrators() {
     const int id = i.id;
     e.start = [id](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, id); };
     e.multibody = true;
+    e.robots = true;
     out.push_back(std::move(e));
   }
   // The fix of mujoco::RK4's orientation (docs/findings/upstream/mujoco-rk4.md), as an
@@ -408,6 +459,7 @@ std::vector<engine_integrator> integrators() {
   e.declared.order = 4;
   e.start = [](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, integrator_dexp); };
   e.multibody = true;
+  e.robots = true;
   out.push_back(std::move(e));
   return out;
 }

@@ -67,6 +67,8 @@ Eigen::Vector3d rpy_of(const Eigen::Matrix3d& r) {
   return {std::atan2(r(2, 1), r(2, 2)), pitch, std::atan2(r(1, 0), r(0, 0))};
 }
 
+}  // namespace
+
 std::string robot_mjcf(const robots::robot& r) {
   const robots::tree t = robots::validate(r);
   std::string out = "<mujoco model=\"" + r.name +
@@ -76,6 +78,63 @@ std::string robot_mjcf(const robots::robot& r) {
   return out + "</worldbody></mujoco>";
 }
 
+robots::robot robot_of(const mjModel* m, const std::vector<int>& dof_of_coordinate) {
+  const int n_ = static_cast<int>(dof_of_coordinate.size());
+  const auto body_name = [m](int b) {
+    const char* name = mj_id2name(m, mjOBJ_BODY, b);
+    return name && *name ? std::string(name) : "body" + std::to_string(b);
+  };
+  robots::robot r;
+  r.name = "mujoco";
+  for (int i = 0; i < 3; ++i) r.gravity(i) = m->opt.gravity[i];
+  std::vector<robots::joint> moving(static_cast<std::size_t>(n_)), fixed;
+  for (int b = 0; b < m->nbody; ++b) {
+    robots::link l;
+    l.name = body_name(b);
+    if (b > 0 && m->body_mass[b] > 0) {
+      robots::inertial in;
+      in.mass = m->body_mass[b];
+      for (int i = 0; i < 3; ++i) in.origin.xyz(i) = m->body_ipos[3 * b + i];
+      mjtNum rot[9];
+      mju_quat2Mat(rot, m->body_iquat + 4 * b);
+      const Eigen::Matrix3d r_i = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(rot);
+      in.inertia = r_i * Eigen::Vector3d(m->body_inertia + 3 * b).asDiagonal() * r_i.transpose();
+      l.body = in;
+    }
+    r.links.push_back(l);
+    if (b == 0) continue;
+    robots::joint j;
+    j.parent = body_name(m->body_parentid[b]);
+    j.child = l.name;
+    for (int i = 0; i < 3; ++i) j.origin.xyz(i) = m->body_pos[3 * b + i];
+    mjtNum rot[9];
+    mju_quat2Mat(rot, m->body_quat + 4 * b);
+    j.origin.rpy = rpy_of(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(rot));
+    if (m->body_jntnum[b] > 1)
+      throw error("mujoco: body " + l.name + " has " + std::to_string(m->body_jntnum[b]) + " joints");
+    if (m->body_jntnum[b] == 0) {
+      j.type = robots::joint_type::fixed;
+      j.name = l.name + "_weld";
+      fixed.push_back(j);
+      continue;
+    }
+    const int id = m->body_jntadr[b];
+    for (int i = 0; i < 3; ++i)
+      if (m->jnt_pos[3 * id + i] != 0) throw error("mujoco: joint " + std::string(mj_id2name(m, mjOBJ_JOINT, id)) +
+                                                   " is not at its body's origin");
+    j.name = mj_id2name(m, mjOBJ_JOINT, id);
+    j.type = m->jnt_type[id] == mjJNT_SLIDE ? robots::joint_type::prismatic : robots::joint_type::continuous;
+    for (int i = 0; i < 3; ++i) j.axis(i) = m->jnt_axis[3 * id + i];
+    const auto at = std::find(dof_of_coordinate.begin(), dof_of_coordinate.end(), m->jnt_dofadr[id]);
+    if (at == dof_of_coordinate.end()) throw error("mujoco: joint " + j.name + " is none of the robot's coordinates");
+    moving[std::size_t(at - dof_of_coordinate.begin())] = j;
+  }
+  r.joints = moving;
+  r.joints.insert(r.joints.end(), fixed.begin(), fixed.end());
+  return r;
+}
+
+namespace {
 class mujoco_model final : public dynamics_model {
  public:
   mujoco_model(const robots::robot& r, const std::string& xml) {
@@ -100,65 +159,10 @@ class mujoco_model final : public dynamics_model {
     }
   }
 
-  /// The robot of MuJoCo's compiled model: a link a body (its mass, body_ipos and the
-  /// tensor R diag(body_inertia) R^T, R of body_iquat), a joint a body's frame in its
-  /// parent's (body_pos, body_quat as roll-pitch-yaw) with its hinge or slide along
-  /// jnt_axis, or fixed where the body has none; the moving joints in the order of the
-  /// robot's coordinates.
   std::optional<robots::robot> held_robot() const override {
-    const mjModel* m = m_.get();
-    const auto body_name = [m](int b) {
-      const char* name = mj_id2name(m, mjOBJ_BODY, b);
-      return name && *name ? std::string(name) : "body" + std::to_string(b);
-    };
-    robots::robot r;
-    r.name = "mujoco";
-    for (int i = 0; i < 3; ++i) r.gravity(i) = m->opt.gravity[i];
-    std::vector<robots::joint> moving(static_cast<std::size_t>(n_)), fixed;
-    for (int b = 0; b < m->nbody; ++b) {
-      robots::link l;
-      l.name = body_name(b);
-      if (b > 0 && m->body_mass[b] > 0) {
-        robots::inertial in;
-        in.mass = m->body_mass[b];
-        for (int i = 0; i < 3; ++i) in.origin.xyz(i) = m->body_ipos[3 * b + i];
-        mjtNum rot[9];
-        mju_quat2Mat(rot, m->body_iquat + 4 * b);
-        const Eigen::Matrix3d r_i = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(rot);
-        in.inertia = r_i * Eigen::Vector3d(m->body_inertia + 3 * b).asDiagonal() * r_i.transpose();
-        l.body = in;
-      }
-      r.links.push_back(l);
-      if (b == 0) continue;
-      robots::joint j;
-      j.parent = body_name(m->body_parentid[b]);
-      j.child = l.name;
-      for (int i = 0; i < 3; ++i) j.origin.xyz(i) = m->body_pos[3 * b + i];
-      mjtNum rot[9];
-      mju_quat2Mat(rot, m->body_quat + 4 * b);
-      j.origin.rpy = rpy_of(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(rot));
-      if (m->body_jntnum[b] > 1)
-        throw error("mujoco: body " + l.name + " has " + std::to_string(m->body_jntnum[b]) + " joints");
-      if (m->body_jntnum[b] == 0) {
-        j.type = robots::joint_type::fixed;
-        j.name = l.name + "_weld";
-        fixed.push_back(j);
-        continue;
-      }
-      const int id = m->body_jntadr[b];
-      for (int i = 0; i < 3; ++i)
-        if (m->jnt_pos[3 * id + i] != 0) throw error("mujoco: joint " + std::string(mj_id2name(m, mjOBJ_JOINT, id)) +
-                                                     " is not at its body's origin");
-      j.name = mj_id2name(m, mjOBJ_JOINT, id);
-      j.type = m->jnt_type[id] == mjJNT_SLIDE ? robots::joint_type::prismatic : robots::joint_type::continuous;
-      for (int i = 0; i < 3; ++i) j.axis(i) = m->jnt_axis[3 * id + i];
-      const auto at = std::find_if(dof_.begin(), dof_.end(), [&](const auto& c) { return c.second == m->jnt_dofadr[id]; });
-      if (at == dof_.end()) throw error("mujoco: joint " + j.name + " is none of the robot's coordinates");
-      moving[std::size_t(at->first)] = j;
-    }
-    r.joints = moving;
-    r.joints.insert(r.joints.end(), fixed.begin(), fixed.end());
-    return r;
+    std::vector<int> dofs(static_cast<std::size_t>(n_));
+    for (const auto& [coordinate, dof] : dof_) dofs[std::size_t(coordinate)] = dof;
+    return robot_of(m_.get(), dofs);
   }
 
   std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override {

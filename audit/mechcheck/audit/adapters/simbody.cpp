@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include "mechcheck/audit/adapters/detail/simbody_bridge.hpp"
+#include "mechcheck/audit/adapters/detail/simbody_setup.hpp"
 
 namespace mechcheck::audit::simbody {
 
@@ -87,6 +88,13 @@ class run final : public engine_run {
       for (int i = 0; i < 3; ++i) b.loop_point[i] = s.loop->point(i), b.loop_anchor[i] = s.loop->anchor(i);
     }
     b.gravitation = s.gravitation;
+    if (s.structure == body_structure::robot) {  // the robot as the dynamics audit builds it
+      b.structure = 3;
+      b.robot = setup_of(s.robot->robot, robots::validate(s.robot->robot), coordinates_);
+      const Eigen::VectorXd q = coordinates_.to_library(s.robot->q0), u = coordinates_.to_library(s.robot->qdot0);
+      b.q0.assign(q.data(), q.data() + q.size());
+      b.u0.assign(u.data(), u.data() + u.size());
+    }
     try {
       model_ = std::make_unique<bridge::model>(b);
     } catch (const bridge::refused& e) {
@@ -123,6 +131,12 @@ class run final : public engine_run {
     if (!r.joint_q.empty()) {
       o.joint_q = Eigen::Map<const Eigen::VectorXd>(r.joint_q.data(), Eigen::Index(r.joint_q.size()));
       o.joint_v = Eigen::Map<const Eigen::VectorXd>(r.joint_u.data(), Eigen::Index(r.joint_u.size()));
+      if (s_.structure == body_structure::robot) {  // the robot's coordinates from the bridge's order
+        o.joint_q = coordinates_.from_library(o.joint_q);
+        o.joint_v = coordinates_.from_library(o.joint_v);
+        o.links.clear();
+        return o;
+      }
     }
     if (!r.links.empty()) return o;
     o.rotation = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(r.rotation);
@@ -139,6 +153,7 @@ class run final : public engine_run {
  private:
   scenario s_;
   std::string name_;
+  coordinate_order coordinates_;  ///< a robot: the bridge's moving bodies in its coordinates
   std::unique_ptr<bridge::model> model_;
   long long steps_ = 0;
 };
@@ -178,6 +193,7 @@ std::vector<engine_integrator> integrators() {
     if (std::string(d.name) == "Verlet") e.declared.order_readings = {order_reading::local_error};
     e.start = [i](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, i); };
     e.multibody = true;
+    e.robots = true;
     out.push_back(std::move(e));
   }
   return out;

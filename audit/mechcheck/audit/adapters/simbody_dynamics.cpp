@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mechcheck/audit/adapters/detail/simbody_bridge.hpp"
+#include "mechcheck/audit/adapters/detail/simbody_setup.hpp"
 #include "mechcheck/audit/adapters/simbody.hpp"
 #include "mechcheck/robots/dynamics.hpp"
 
@@ -21,14 +22,14 @@ void copy(const Eigen::Vector3d& v, double* out) {
   for (int i = 0; i < 3; ++i) out[i] = v(i);
 }
 
-/// The robot in the bridge's terms: its links parents first (the root welded to Ground),
-/// each link's inertia turned into its frame (R_o I R_o^T) about the centre of mass.
-bridge::robot_setup setup_of(const robots::robot& r, const robots::tree& t, coordinate_order& coordinates) {
-  bridge::robot_setup s;
+}  // namespace
+
+simbody_bridge::robot_setup setup_of(const robots::robot& r, const robots::tree& t, coordinate_order& coordinates) {
+  simbody_bridge::robot_setup s;
   copy(r.gravity, s.gravity);
   std::vector<int> body_of(r.links.size(), -1);
   const auto add = [&](int link, int parent, const robots::joint* j) {
-    bridge::robot_setup::body b;
+    simbody_bridge::robot_setup::body b;
     b.parent = parent;
     if (j) {
       b.joint = j->type == robots::joint_type::prismatic ? 1 : j->type == robots::joint_type::fixed ? 2 : 0;
@@ -53,6 +54,7 @@ bridge::robot_setup setup_of(const robots::robot& r, const robots::tree& t, coor
   return s;
 }
 
+namespace {
 class model final : public dynamics_model {
  public:
   explicit model(const robots::robot& r) {

@@ -187,10 +187,23 @@ frame frame_of(const MobilizedBody& b, const State& st) {
 
 model::model(const setup& s) : p_(new impl) {
   impl& m = *p_;
-  if (s.gravity != 0) Force::Gravity(m.forces, m.matter, UnitVec3(0, 0, -1), s.gravity);
-  if (s.structure != 0) {
+  if (s.gravity != 0 && s.structure != 3) Force::Gravity(m.forces, m.matter, UnitVec3(0, 0, -1), s.gravity);
+  if (s.structure == 3) {  // a robot: its mobilizers and gravity, then the start, q and u
+    m.links = build_robot(s.robot, m.matter);
+    Force::Gravity(m.forces, m.matter, Vec3(s.robot.gravity[0], s.robot.gravity[1], s.robot.gravity[2]));
+    m.chain = true;
+    m.state = m.system.realizeTopology();
+    m.system.realizeModel(m.state);
+    for (std::size_t k = 0; k < m.links.size(); ++k) {
+      m.links[k].setOneQ(m.state, 0, s.q0.at(k));
+      m.links[k].setOneU(m.state, 0, s.u0.at(k));
+    }
+    m.system.realize(m.state, Stage::Velocity);
+  } else if (s.structure != 0) {
     build_multibody(*this, s, m.matter, m.forces, m.links, m.state, m.system);
     m.chain = s.structure == 1;
+  }
+  if (s.structure != 0) {
 #ifdef MECHCHECK_SIMBODY_WITH_SUNDIALS
     if (std::string(entries().at(static_cast<std::size_t>(s.integrator)).name) == "CPodes")
       throw refused(

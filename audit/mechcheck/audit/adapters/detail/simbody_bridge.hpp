@@ -8,12 +8,34 @@
 #include <string>
 #include <vector>
 
+namespace SimTK {
+class MobilizedBody;
+class SimbodyMatterSubsystem;
+}  // namespace SimTK
+
 namespace mechcheck::audit::simbody_bridge {
 
 /// An integrator this build cannot run (see CPodes in the adapter's notes).
 class refused : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+/// A robot for its equations of motion (dynamics.hpp), in the bridge's standard types:
+/// bodies parents first, each on a mobilizer from its parent (Ground for the first).
+struct robot_setup {
+  struct body {
+    int parent = -1;  ///< index into bodies; -1: Ground
+    int joint = 2;    ///< 0 a Pin (revolute), 1 a Slider (prismatic), 2 a Weld (fixed)
+    double rotation[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  ///< the joint's origin in the parent, row-major
+    double position[3] = {0, 0, 0};
+    double axis[3] = {0, 0, 1};                        ///< unit, in the body's frame
+    double mass = 0;
+    double com[3] = {0, 0, 0};                         ///< centre of mass in the body's frame
+    double inertia[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};   ///< about the centre of mass, row-major
+  };
+  double gravity[3] = {0, 0, 0};
+  std::vector<body> bodies;
 };
 
 /// The scenario in the bridge's standard types (engines.hpp's scenario, see there).
@@ -29,7 +51,8 @@ struct setup {
   double omega0[3] = {0, 0, 0};                                ///< world frame
   int integrator = 0;             ///< index into the list below
   /// Multibody scenarios (engines.hpp's links, loop and gravitation): structure 1 a chain
-  /// of pins about y, 2 free bodies under their mutual gravitation; 0 the one body above.
+  /// of pins about y, 2 free bodies under their mutual gravitation, 3 a robot (below); 0
+  /// the one body above.
   struct link {
     double mass = 1, inertia[3] = {1, 1, 1}, com[3] = {0, 0, 0}, hinge[3] = {0, 0, 0};
     double angle0 = 0, rate0 = 0, position0[3] = {0, 0, 0}, velocity0[3] = {0, 0, 0};
@@ -39,6 +62,10 @@ struct setup {
   bool loop = false;
   double loop_point[3] = {0, 0, 0}, loop_anchor[3] = {0, 0, 0};
   double gravitation = 0;
+  /// structure 3: a robot (its gravity its own), started at q0 and u0 (qdot) in the order of
+  /// its moving bodies; read back as joint_q and joint_u in that order.
+  robot_setup robot;
+  std::vector<double> q0, u0;
 };
 
 /// One body's frame.
@@ -55,7 +82,7 @@ struct reading {
   bool pin = false;       ///< a pin: q and u below are its angle and rate
   double q = 0, u = 0;
   std::vector<frame> links;  ///< multibody scenarios: every body's frame
-  std::vector<double> joint_q, joint_u;  ///< a chain: its pins' angles and rates
+  std::vector<double> joint_q, joint_u;  ///< a chain, a robot: its mobilizers' q and u
 };
 
 /// Principal moments of a shape by Simbody's UnitInertia helpers (sphere, brick,
@@ -81,22 +108,11 @@ class model {
   std::unique_ptr<impl> p_;
 };
 
-/// A robot for its equations of motion (dynamics.hpp), in the bridge's standard types:
-/// bodies parents first, each on a mobilizer from its parent (Ground for the first).
-struct robot_setup {
-  struct body {
-    int parent = -1;  ///< index into bodies; -1: Ground
-    int joint = 2;    ///< 0 a Pin (revolute), 1 a Slider (prismatic), 2 a Weld (fixed)
-    double rotation[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  ///< the joint's origin in the parent, row-major
-    double position[3] = {0, 0, 0};
-    double axis[3] = {0, 0, 1};                        ///< unit, in the body's frame
-    double mass = 0;
-    double com[3] = {0, 0, 0};                         ///< centre of mass in the body's frame
-    double inertia[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};   ///< about the centre of mass, row-major
-  };
-  double gravity[3] = {0, 0, 0};
-  std::vector<body> bodies;
-};
+/// Inside the bridge (its sources include Simbody): the robot's bodies on their mobilizers
+/// (a Pin or Slider whose frames turn z or x onto the joint's axis, a Weld for a fixed
+/// joint, in robot_setup's order); returns the moving bodies in order. Gravity is the
+/// caller's.
+std::vector<SimTK::MobilizedBody> build_robot(const robot_setup& r, SimTK::SimbodyMatterSubsystem& matter);
 
 /// Simbody's equations of motion of a robot_setup: q, u, udot, tau and the rows and columns
 /// of M in the order of the moving bodies in `bodies` (u = qdot for a Pin and a Slider).

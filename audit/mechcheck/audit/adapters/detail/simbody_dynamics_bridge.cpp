@@ -25,35 +25,40 @@ MassProperties mass_properties(const robot_setup::body& b) {
 }
 }  // namespace
 
+std::vector<MobilizedBody> build_robot(const robot_setup& r, SimbodyMatterSubsystem& matter) {
+  std::vector<MobilizedBody> mobods, moving;
+  for (const auto& b : r.bodies) {
+    MobilizedBody& parent = b.parent < 0 ? matter.updGround() : mobods[std::size_t(b.parent)];
+    const Transform origin(Rotation(mat33(b.rotation)), vec3(b.position));
+    const Body::Rigid info(mass_properties(b));
+    if (b.joint == 0 || b.joint == 1) {
+      // The mobilizer's frames F (on the parent, at the joint's origin) and M (on the
+      // body, at its origin) turned so that their z axis (Pin) or x axis (Slider) is the
+      // joint's axis: X_PB = origin * R_a * motion(q) * R_a^T.
+      const Rotation ra(UnitVec3(vec3(b.axis)), b.joint == 0 ? CoordinateAxis(ZAxis) : CoordinateAxis(XAxis));
+      if (b.joint == 0)
+        mobods.push_back(MobilizedBody::Pin(parent, origin * Transform(ra), info, Transform(ra)));
+      else
+        mobods.push_back(MobilizedBody::Slider(parent, origin * Transform(ra), info, Transform(ra)));
+      moving.push_back(mobods.back());
+    } else {
+      mobods.push_back(MobilizedBody::Weld(parent, origin, info, Transform()));
+    }
+  }
+  return moving;
+}
+
 struct robot_dynamics::impl {
   MultibodySystem system;
   SimbodyMatterSubsystem matter{system};
   GeneralForceSubsystem forces{system};
-  Force::Gravity gravity;
   std::vector<MobilizedBody> moving;  ///< in order
+  Force::Gravity gravity;
   std::vector<UIndex> u;              ///< per moving body
   mutable State state;
 
-  explicit impl(const robot_setup& r) : gravity(forces, matter, vec3(r.gravity)) {
-    std::vector<MobilizedBody> mobods;
-    for (const auto& b : r.bodies) {
-      MobilizedBody& parent = b.parent < 0 ? matter.updGround() : mobods[std::size_t(b.parent)];
-      const Transform origin(Rotation(mat33(b.rotation)), vec3(b.position));
-      const Body::Rigid info(mass_properties(b));
-      if (b.joint == 0 || b.joint == 1) {
-        // The mobilizer's frames F (on the parent, at the joint's origin) and M (on the
-        // body, at its origin) turned so that their z axis (Pin) or x axis (Slider) is the
-        // joint's axis: X_PB = origin * R_a * motion(q) * R_a^T.
-        const Rotation ra(UnitVec3(vec3(b.axis)), b.joint == 0 ? CoordinateAxis(ZAxis) : CoordinateAxis(XAxis));
-        if (b.joint == 0)
-          mobods.push_back(MobilizedBody::Pin(parent, origin * Transform(ra), info, Transform(ra)));
-        else
-          mobods.push_back(MobilizedBody::Slider(parent, origin * Transform(ra), info, Transform(ra)));
-        moving.push_back(mobods.back());
-      } else {
-        mobods.push_back(MobilizedBody::Weld(parent, origin, info, Transform()));
-      }
-    }
+  explicit impl(const robot_setup& r)
+      : moving(build_robot(r, matter)), gravity(forces, matter, vec3(r.gravity)) {
     state = system.realizeTopology();
     for (const MobilizedBody& m : moving) u.push_back(m.getFirstUIndex(state));
   }
