@@ -1,0 +1,263 @@
+// Robots as engine scenarios (problems/scenarios.hpp: robot_scenario, random_robot_scenarios)
+// against answers known without them: a one-link robot's reference is the pendulum's
+// elliptic solution; a reference engine written here (RK4 on the robot's forward dynamics,
+// robots/dynamics.hpp) is of order 4 on a robot with skew axes, a slide and rotated
+// inertias; its variant that builds the robot with each inertia turned the wrong way stalls
+// and is contradicted -- unless it says which robot it holds, when it is measured against
+// that one. The engines found in this build (MuJoCo, DART, Simbody, Bullet's multibody)
+// start where the scenario says and take a first step the reference agrees with to h^2.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "mechcheck/audit/adapters/found.hpp"
+#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/problems/urdf.hpp"
+#include "mechcheck/reference/pendulum.hpp"
+#include "mechcheck/robots/dynamics.hpp"
+
+namespace engine_robots_test {
+using namespace mechcheck;
+namespace audit = mechcheck::audit;
+using outcome = audit::verdict::outcome;
+constexpr double eps = std::numeric_limits<double>::epsilon();
+
+/// A pendulum as a robot: one revolute joint about y at the world origin, the bob 1 kg at
+/// (0, 0, -1) with moments 1e-3 (the engine scenario pendulum_small's body).
+robots::robot pendulum_robot() {
+  robots::robot r;
+  r.name = "pendulum";
+  r.links = {{"base", std::nullopt}, {"bob", robots::inertial{1, {{0, 0, -1}, {0, 0, 0}}, Eigen::Matrix3d::Identity() * 1e-3}}};
+  robots::joint j;
+  j.name = "hinge";
+  j.parent = "base";
+  j.child = "bob";
+  j.axis = {0, 1, 0};
+  r.joints = {j};
+  return r;
+}
+
+/// Two links on a skew hinge and a slide, their inertias full tensors turned by their
+/// inertial origins (every number dyadic).
+robots::robot skew_robot() {
+  robots::robot r;
+  r.name = "skew";
+  Eigen::Matrix3d i1, i2;
+  i1 << 0.25, 0.0625, 0, 0.0625, 0.5, 0.03125, 0, 0.03125, 0.375;
+  i2 << 0.125, 0, 0.015625, 0, 0.0625, 0, 0.015625, 0, 0.09375;
+  r.links = {{"base", std::nullopt},
+             {"arm", robots::inertial{1.5, {{0.25, 0, -0.5}, {0.5, -0.25, 1}}, i1}},
+             {"slider", robots::inertial{0.75, {{0, 0.125, -0.25}, {-1, 0.5, 0.25}}, i2}}};
+  robots::joint a, b;
+  a.name = "shoulder";
+  a.parent = "base";
+  a.child = "arm";
+  a.axis = Eigen::Vector3d(1, 2, 2) / 3;
+  a.origin.rpy = {0.25, 0, -0.5};
+  b.name = "slide";
+  b.type = robots::joint_type::prismatic;
+  b.parent = "arm";
+  b.child = "slider";
+  b.axis = Eigen::Vector3d(0, 0.6, 0.8);
+  b.origin.xyz = {0.5, 0, -0.75};
+  b.origin.rpy = {0, 0.5, 0};
+  r.joints = {a, b};
+  return r;
+}
+
+/// The same robot with every link's inertia turned by the inverse of its inertial origin's
+/// rotation (R_o^T I R_o where the description means R_o I R_o^T): the kind of mistake an
+/// engine's model builder makes.
+robots::robot turned_wrong(robots::robot r) {
+  for (auto& l : r.links)
+    if (l.body) l.body->origin.rpy = -l.body->origin.rpy;
+  return r;
+}
+
+/// A reference engine: (q, qdot) by classical RK4 on qddot = M^-1 (0 - h) of the robot it
+/// builds (`build` of the scenario's robot), optionally saying which robot it holds.
+class robot_run final : public audit::engine_run {
+ public:
+  robot_run(const audit::scenario& s, const std::function<robots::robot(const robots::robot&)>& build, bool tells)
+      : model_(build(s.robot->robot)), q_(s.robot->q0), v_(s.robot->qdot0), tells_(tells) {}
+  void step(double h) override {
+    const auto acc = [this](const Eigen::VectorXd& q, const Eigen::VectorXd& v) -> Eigen::VectorXd {
+      return robots::forward_dynamics<double>(model_, q, v, Eigen::VectorXd::Zero(q.size()));
+    };
+    const Eigen::VectorXd k1q = v_, k1v = acc(q_, v_);
+    const Eigen::VectorXd k2q = v_ + h / 2 * k1v, k2v = acc(q_ + h / 2 * k1q, k2q);
+    const Eigen::VectorXd k3q = v_ + h / 2 * k2v, k3v = acc(q_ + h / 2 * k2q, k3q);
+    const Eigen::VectorXd k4q = v_ + h * k3v, k4v = acc(q_ + h * k3q, k4q);
+    q_ += h / 6 * (k1q + 2 * k2q + 2 * k3q + k4q);
+    v_ += h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
+  }
+  audit::body_reading read() const override {
+    audit::body_reading r;
+    r.joint_q = q_;
+    r.joint_v = v_;
+    return r;
+  }
+  std::optional<robots::robot> held_robot() const override {
+    if (!tells_) return std::nullopt;
+    return model_.description;
+  }
+
+ private:
+  robots::robot_model<double> model_;
+  Eigen::VectorXd q_, v_;
+  bool tells_;
+};
+
+audit::engine_integrator reference_engine(std::string name, std::function<robots::robot(const robots::robot&)> build,
+                                          bool tells = false) {
+  audit::engine_integrator e;
+  e.name = std::move(name);
+  e.origin = "engine_robots_test: RK4 on the robot's forward dynamics";
+  e.declared.order = 4;
+  e.multibody = true;
+  e.robots = true;
+  e.start = [build, tells](const audit::scenario& s) -> std::unique_ptr<audit::engine_run> {
+    if (s.structure != audit::body_structure::robot) throw audit::scenario_refused("robots only");
+    return std::make_unique<robot_run>(s, build, tells);
+  };
+  return e;
+}
+
+/// The skew robot from a start off its rest, over a quarter second (its reference is cheap).
+audit::scenario skew_scenario() {
+  Eigen::VectorXd q0(2), qdot0(2);
+  q0 << 0.5, -0.25;
+  qdot0 << 1, 0.5;
+  return audit::robot_scenario("robot_skew", skew_robot(), q0, qdot0, 0.25);
+}
+
+audit::engine_options robot_options(const audit::scenario& s) {
+  audit::engine_options o;
+  o.robots = {s};
+  o.scenarios = {s.name};
+  o.long_run_steps = 0;
+  o.max_study_steps = 1 << 10;
+  return o;
+}
+
+TEST(EngineRobots, AOneLinkRobotsReferenceIsThePendulumsEllipticSolution) {
+  const double theta0 = 0.5;
+  const audit::scenario s = audit::robot_scenario("robot_pendulum", pendulum_robot(), Eigen::VectorXd::Constant(1, theta0),
+                                                  Eigen::VectorXd::Zero(1), 2);
+  // theta'' = -(m g l / I) sin theta with I = m l^2 + I_yy = 1.001 about the hinge.
+  const double w02 = 9.81 / 1.001;
+  const reference::pendulum_motion<mpfr50> motion(mpfr50(1), mpfr50(1), mpfr50(w02), mpfr50(theta0), mpfr50(0));
+  for (const double t : {0.0, 0.75, 2.0}) {
+    const Eigen::VectorXd x = s.exact(t);
+    const auto [theta, p] = motion.state_at(mpfr50(t));
+    ASSERT_EQ(x.size(), 2);
+    // Both are certified far below double's rounding, but w02 is itself rounded to double
+    // (a relative 2^-53 in the frequency moves theta by about t w0 theta0 eps).
+    EXPECT_NEAR(x(0), static_cast<double>(theta), 8 * eps * (1 + t * std::sqrt(w02))) << "t = " << t;
+    EXPECT_NEAR(x(1), static_cast<double>(p), 8 * eps * std::sqrt(w02) * (1 + t * std::sqrt(w02))) << "t = " << t;
+  }
+  // The observation's energy is T + V of the robot: at rest, V = -m g cos(theta0).
+  EXPECT_NEAR(s.robot->energy(Eigen::VectorXd::Constant(1, theta0), Eigen::VectorXd::Zero(1)), -9.81 * std::cos(theta0),
+              4 * eps * 9.81);
+}
+
+TEST(EngineRobots, AnEngineOfTheRightModelIsOfOrderFourAndTheWrongModelIsContradictedUnlessItSaysWhichItHolds) {
+  const audit::scenario s = skew_scenario();
+  const audit::engine_options o = robot_options(s);
+  const auto right = audit::audit_engine(reference_engine("test::rk4", [](const robots::robot& r) { return r; }), o);
+  ASSERT_EQ(right.scenarios.size(), 1u);
+  EXPECT_EQ(right.scenarios[0].failure, "");
+  EXPECT_EQ(right.order.result, outcome::confirmed) << right.order.measured;
+  EXPECT_NEAR(right.scenarios[0].global.fit.value, 4, 0.1);
+  EXPECT_EQ(right.scenarios[0].readout, "the engine's joint coordinates");
+  EXPECT_EQ(right.scenarios[0].held, "");
+
+  const auto wrong = audit::audit_engine(reference_engine("test::rk4/wrong_inertia", turned_wrong), o);
+  EXPECT_EQ(wrong.order.result, outcome::contradicted) << wrong.order.measured;
+
+  // The same engine saying which robot it computes with: measured against that robot.
+  const auto told = audit::audit_engine(reference_engine("test::rk4/wrong_inertia_held", turned_wrong, true), o);
+  EXPECT_EQ(told.order.result, outcome::confirmed) << told.order.measured;
+  EXPECT_NE(told.scenarios[0].held.find("measured against the robot the engine holds"), std::string::npos)
+      << told.scenarios[0].held;
+}
+
+TEST(EngineRobots, AnAdapterWithoutRobotsRefusesThemByName) {
+  const audit::scenario s = skew_scenario();
+  audit::engine_integrator e = reference_engine("test::no_robots", [](const robots::robot& r) { return r; });
+  e.robots = false;
+  const auto a = audit::audit_engine(e, robot_options(s));
+  ASSERT_EQ(a.scenarios.size(), 1u);
+  EXPECT_NE(a.scenarios[0].refused.find("builds no robot"), std::string::npos) << a.scenarios[0].refused;
+}
+
+TEST(EngineRobots, RandomRobotsAreTheSameForASeedWhateverTheirCount) {
+  const auto three = audit::random_robot_scenarios(3, 7), two = audit::random_robot_scenarios(2, 7);
+  ASSERT_EQ(three.size(), 3u);
+  ASSERT_EQ(two.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(three[k].name, "robot_7_" + std::to_string(k));
+    EXPECT_EQ(audit::to_urdf(three[k].robot->robot), audit::to_urdf(two[k].robot->robot));
+    EXPECT_EQ(three[k].robot->q0, two[k].robot->q0);
+    EXPECT_EQ(three[k].robot->qdot0, two[k].robot->qdot0);
+  }
+  EXPECT_NE(audit::to_urdf(audit::random_robot_scenarios(1, 8)[0].robot->robot), audit::to_urdf(three[0].robot->robot));
+  for (const auto& s : three) {
+    EXPECT_EQ(s.structure, audit::body_structure::robot);
+    EXPECT_GE(s.robot->q0.size(), 1);
+    EXPECT_EQ(s.classes.size(), 1u);
+  }
+}
+
+TEST(EngineRobots, BadRobotScenariosAreTypedErrors) {
+  robots::robot fixed = pendulum_robot();
+  fixed.joints[0].type = robots::joint_type::fixed;
+  EXPECT_THROW(audit::robot_scenario("r", fixed, Eigen::VectorXd(0), Eigen::VectorXd(0)), domain_error);
+  EXPECT_THROW(audit::robot_scenario("r", pendulum_robot(), Eigen::VectorXd::Zero(2), Eigen::VectorXd::Zero(1)),
+               dimension_error);
+  EXPECT_THROW(audit::robot_scenario("r", pendulum_robot(), Eigen::VectorXd::Constant(1, NAN), Eigen::VectorXd::Zero(1)),
+               non_finite_error);
+  robots::robot bad = pendulum_robot();
+  bad.joints[0].axis = {0, 0, 0};
+  EXPECT_THROW(audit::robot_scenario("r", bad, Eigen::VectorXd::Zero(1), Eigen::VectorXd::Zero(1)), robots::robot_error);
+  EXPECT_THROW(audit::random_robot_scenarios(-1, 1), domain_error);
+  EXPECT_THROW(audit::random_robot_scenarios(1, 1, 9), domain_error);
+  // An engine's reading of another size is a dimension_error, not a wrong observation.
+  const audit::scenario s = skew_scenario();
+  audit::body_reading r;
+  r.joint_q = Eigen::VectorXd::Zero(1);
+  r.joint_v = Eigen::VectorXd::Zero(1);
+  EXPECT_THROW(audit::observe(s, r), dimension_error);
+}
+
+TEST(EngineRobots, EveryEngineThatBuildsRobotsStartsWhereTheScenarioSaysAndAgreesOverAFirstStep) {
+  const audit::scenario s = skew_scenario();
+  const Eigen::VectorXd x0 = s.exact(0);
+  const double h = 1.0 / 1024;
+  const Eigen::VectorXd x1 = s.exact(h);
+  int engines = 0;
+  for (const auto& e : audit::engines_found()) {
+    if (!e.robots) continue;
+    std::unique_ptr<audit::engine_run> run;
+    try {
+      run = e.start(s);
+    } catch (const audit::scenario_refused& why) {  // an integrator this build cannot run (CPodes)
+      EXPECT_EQ(std::string(why.what()).find("robot"), std::string::npos) << e.name << ": " << why.what();
+      continue;
+    }
+    ++engines;
+    const Eigen::VectorXd start = audit::observe(s, run->read()).observables;
+    EXPECT_LE((start - x0).norm(), 4 * eps * x0.norm()) << e.name;
+    run->step(h);
+    // One step's error: of order h^2 for a first-order method (|qddot| h^2, |qddot| below 64
+    // here): a start or a coordinate mapped wrong is off by order h or more. (A wrong model
+    // is the order study's to find: its one-step error is of order h^2 as well.)
+    const Eigen::VectorXd after = audit::observe(s, run->read()).observables;
+    EXPECT_LE((after - x1).norm(), 64 * h * h) << e.name;
+  }
+  if (engines == 0) GTEST_SKIP() << "no engine of this build builds robots";
+}
+
+}  // namespace engine_robots_test
