@@ -489,6 +489,7 @@ engine_audit audit_engine(const engine_integrator& in, const engine_options& opt
     if (opt.progress) opt.progress(in.name + " on " + s.name);
     engine_scenario_audit a;
     a.scenario = s.name;
+    a.description = s.description;
     try {
       if (s.structure == body_structure::robot && !in.robots)
         throw scenario_refused(in.name + ": the adapter builds no robot (a tree of revolute and prismatic joints)");

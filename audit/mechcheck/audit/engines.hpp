@@ -147,6 +147,7 @@ struct engine_integrator {
 /// The audit of one integrator on one scenario.
 struct engine_scenario_audit {
   std::string scenario;
+  std::string description;  ///< the scenario's (a report lists those that are not scenarios())
   std::string refused;  ///< non-empty: the engine cannot express it (why)
   std::string failure;  ///< non-empty: starting or stepping it failed outside the studies
   order_study global;   ///< every observable together (the plots)

@@ -175,7 +175,18 @@ std::string engines_to_json(const std::vector<engine_audit>& audits, const std::
 std::string engines_to_markdown(const std::vector<engine_audit>& audits, const std::vector<shape_audit>& shapes) {
   std::ostringstream md;
   md << "# Physics engines against exact solutions\n\n";
-  for (const auto& s : scenarios()) md << "- `" << s.name << "`: " << s.description << "\n";
+  std::vector<std::string> listed;
+  for (const auto& s : scenarios()) {
+    md << "- `" << s.name << "`: " << s.description << "\n";
+    listed.push_back(s.name);
+  }
+  // The robots and any other scenario given beside the hand-built ones, once each.
+  for (const auto& a : audits)
+    for (const auto& s : a.scenarios)
+      if (std::find(listed.begin(), listed.end(), s.scenario) == listed.end()) {
+        md << "- `" << s.scenario << "`: " << s.description << "\n";
+        listed.push_back(s.scenario);
+      }
   md << "\nThe order of each class of observables (a fit marked * is settled but not decisive, ? not settled; "
         "only decisive fits, three exponents within 0.1, decide a contradiction). The hinge scenarios are read "
         "from one set of coordinates, named in the last column.\n\n"

@@ -1,5 +1,6 @@
 // Robots as engine scenarios (problems/scenarios.hpp): a robot's Lagrangian made a certified
 // reference, and random robots drawn as scenarios.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -67,10 +68,20 @@ scenario robot_scenario(std::string name, const robots::robot& r, const Eigen::V
   s.h_long = 0.01;
   s.scale = std::max(1.0, std::sqrt(q0.squaredNorm() + qdot0.squaredNorm()));
   s.classes = {{"joint coordinates", 0, static_cast<int>(2 * n)}};
-  s.description = "robot " + r.name + ": " + std::to_string(r.links.size()) + " links, " + std::to_string(n) +
-                  " moving joints, released at q0 with rates qdot0 under gravity (" + exact_text(r.gravity(0)) + ", " +
-                  exact_text(r.gravity(1)) + ", " + exact_text(r.gravity(2)) +
-                  "): its joint coordinates and rates against a certified reference (its Hamiltonian "
+  const auto numbers = [](const Eigen::VectorXd& v) {
+    std::string out;
+    for (Eigen::Index i = 0; i < v.size(); ++i) out += (i ? ", " : "") + exact_text(v(i));
+    return "(" + out + ")";
+  };
+  std::string joints;
+  for (const robots::joint& j : r.joints) {
+    joints += (joints.empty() ? "" : ", ") + j.name + " " + robots::joint_type_name(j.type);
+    if (j.type != robots::joint_type::fixed) joints += " along " + numbers(j.axis);
+  }
+  s.description = "robot " + r.name + " (its URDF robots/" + s.name + ".urdf of the report): " +
+                  std::to_string(r.links.size()) + " links, joints " + joints + "; released at q0 = " + numbers(q0) +
+                  " with qdot0 = " + numbers(qdot0) + " under gravity " + numbers(r.gravity) +
+                  ": its joint coordinates and rates against a certified reference (its Hamiltonian "
                   "p^T M^-1 p / 2 + V, robots::robot_hamiltonian)";
 
   // The model's key: the robot as URDF (every number at 17 digits) and the start.
