@@ -3,6 +3,7 @@
 /// made when first asked for: the chains' Hamiltonians and the robots' Lagrangians
 /// (problems/scenarios.hpp).
 
+#include <cstdio>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -15,6 +16,14 @@
 #include "mechcheck/core.hpp"
 
 namespace mechcheck::audit::detail {
+
+/// A double as the exact text a model's setup takes (17 significant digits: it reads back
+/// to the same double).
+inline std::string exact_text(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
 
 /// The observables at t of `model`'s reference in tier T (double: the reference of the
 /// double-rounded start the engines are given; mpfr50: the state the observables are

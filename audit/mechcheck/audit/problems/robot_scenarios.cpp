@@ -1,8 +1,7 @@
-// Robots as engine scenarios (problems/scenarios.hpp): a robot's Lagrangian made a certified
+// Robots as engine scenarios (problems/scenarios.hpp): a robot's Hamiltonian made a certified
 // reference, and random robots drawn as scenarios.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <memory>
 #include <type_traits>
 
@@ -17,11 +16,7 @@
 namespace mechcheck::audit {
 
 namespace {
-std::string exact_text(double x) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
+using detail::exact_text;
 
 /// The robot's Hamiltonian (robots/dynamics.hpp) over its own copy of the robot's numbers
 /// in mpfr50: the reference is solved in mpfr50, and so is the problem.

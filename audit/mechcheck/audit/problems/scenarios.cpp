@@ -309,11 +309,7 @@ scenario kepler() {
 
 /// An angle in [-pi, pi]: relative joint angles read from frames and from references alike.
 
-std::string exact_text(double x) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
+using detail::exact_text;
 
 model_setup setup_of(const std::string& name, const std::string& parameters, const Eigen::VectorXd& q0,
                      const Eigen::VectorXd& p0, double t_end) {
