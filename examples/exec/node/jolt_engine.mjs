@@ -1,0 +1,182 @@
+#!/usr/bin/env node
+// Jolt Physics (npm jolt-physics: the C++ engine compiled to WebAssembly) served to
+// mechcheck's audit as an engine (docs/protocol.md): PhysicsSystem.Update through
+// JoltInterface.Step at a fixed step, on the scenarios of free bodies (the tops, the box, a
+// projectile, Kepler's orbit, three bodies). Jointed scenarios are refused: this client
+// builds no constraints yet.
+//
+//   mechcheck-audit -o report --exec-engine -- node examples/exec/node/jolt_engine.mjs
+//
+// The scenario's model: a dynamic Body per body with a sphere shape of radius 0.1 (nothing
+// collides: one object layer whose pairs are not enabled) and its mass and principal moments
+// given (mOverrideMassProperties = MassAndInertiaProvided, the inertia diag(I) in the body's
+// frame), linear and angular damping set to 0 (Jolt's defaults are 0.05 each,
+// BodyCreationSettings.h), the angular velocity's clamp raised from its default 0.25 pi 60
+// rad/s to 1e6, sleeping off; gravity the PhysicsSystem's; the central force and the mutual
+// gravitation added by BodyInterface.AddForce before each step (Jolt clears a body's forces
+// after each step). Two integrators: mApplyGyroscopicForce off (Jolt's default) and on.
+// Jolt computes in single precision (float) in this build.
+import initJolt from 'jolt-physics/wasm-compat';
+import { readFileSync } from 'node:fs';
+import { quaternionOf } from './bodies.mjs';
+import { Refused, frame, scenarioOf, serveEngine } from './protocol.mjs';
+
+const Jolt = await initJolt();
+const version = JSON.parse(readFileSync(new URL('./node_modules/jolt-physics/package.json', import.meta.url))).version;
+
+const integrators = [
+  { name: 'default', origin: "BodyCreationSettings.mApplyGyroscopicForce = false (Jolt's default)" },
+  {
+    name: 'gyroscopic',
+    origin:
+      'BodyCreationSettings.mApplyGyroscopicForce = true (BodyCreationSettings.h: "Set to indicate that the ' +
+      'gyroscopic force should be applied to this body (aka Dzhanibekov effect, see ' +
+      'https://en.wikipedia.org/wiki/Tennis_racket_theorem)")',
+  },
+];
+
+const LAYER = 0;
+const arr = (v) => [v.GetX(), v.GetY(), v.GetZ()];
+/** The rotation (row-major) of a unit quaternion. */
+function rotationOf(q) {
+  const [x, y, z, w] = [q.GetX(), q.GetY(), q.GetZ(), q.GetW()];
+  return [
+    1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
+    2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
+    2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y),
+  ];
+}
+
+/** A physics system of one object layer that collides with nothing. */
+function makeSystem(gravity) {
+  const settings = new Jolt.JoltSettings();
+  const pairs = new Jolt.ObjectLayerPairFilterTable(1);
+  const layers = new Jolt.BroadPhaseLayerInterfaceTable(1, 1);
+  layers.MapObjectToBroadPhaseLayer(LAYER, new Jolt.BroadPhaseLayer(0));
+  settings.mObjectLayerPairFilter = pairs;
+  settings.mBroadPhaseLayerInterface = layers;
+  settings.mObjectVsBroadPhaseLayerFilter = new Jolt.ObjectVsBroadPhaseLayerFilterTable(layers, 1, pairs, 1);
+  const jolt = new Jolt.JoltInterface(settings);
+  Jolt.destroy(settings);
+  jolt.GetPhysicsSystem().SetGravity(new Jolt.Vec3(0, 0, -gravity));
+  return jolt;
+}
+
+class Run {
+  constructor(integrator, scenario) {
+    if (!integrators.some((i) => i.name === integrator)) throw new Refused(`no integrator ${integrator}`);
+    const s = scenarioOf(scenario);
+    if (!(s.structure === 'free_bodies' || (s.structure === 'one_body' && s.joint === 'free')))
+      throw new Refused(`this client builds free bodies only (no constraints yet): ${s.name} has joints`);
+    this.s = s;
+    this.jolt = makeSystem(s.gravity);
+    const bodies = this.jolt.GetPhysicsSystem().GetBodyInterface();
+    this.interface = bodies;
+    this.shape = new Jolt.SphereShape(0.1, null);
+    const body = (mass, inertia, rotation, position, velocity, omega) => {
+      const q = quaternionOf(rotation);
+      const c = new Jolt.BodyCreationSettings(this.shape, new Jolt.RVec3(...position), new Jolt.Quat(q.x, q.y, q.z, q.w),
+                                              Jolt.EMotionType_Dynamic, LAYER);
+      c.mOverrideMassProperties = Jolt.EOverrideMassProperties_MassAndInertiaProvided;
+      c.mMassPropertiesOverride.mMass = mass;
+      c.mMassPropertiesOverride.mInertia = new Jolt.Mat44().sScaleVec3(new Jolt.Vec3(...inertia));
+      c.mLinearDamping = 0;
+      c.mAngularDamping = 0;
+      c.mMaxAngularVelocity = 1e6;
+      c.mAllowSleeping = false;
+      c.mApplyGyroscopicForce = integrator === 'gyroscopic';
+      const b = bodies.CreateBody(c);
+      Jolt.destroy(c);
+      bodies.AddBody(b.GetID(), Jolt.EActivation_Activate);
+      b.SetLinearVelocity(new Jolt.Vec3(...velocity));
+      b.SetAngularVelocity(new Jolt.Vec3(...omega));
+      return b;
+    };
+    this.bodies =
+      s.structure === 'one_body'
+        ? [body(s.mass, s.inertia, s.rotation0, s.position0, s.velocity0, s.omega0)]
+        : s.links.map((l) => body(l.mass, l.inertia, [1, 0, 0, 0, 1, 0, 0, 0, 1], l.position0, l.velocity0, [0, 0, 0]));
+    this.masses = s.structure === 'one_body' ? [s.mass] : s.links.map((l) => l.mass);
+    this.steps = 0;
+  }
+
+  applyForces() {
+    const s = this.s;
+    const force = (k, f) => this.interface.AddForce(this.bodies[k].GetID(), new Jolt.Vec3(...f), Jolt.EActivation_Activate);
+    if (s.central !== 0) {
+      const x = arr(this.bodies[0].GetCenterOfMassPosition()), r = Math.hypot(...x);
+      force(0, x.map((xi) => (-s.mass * s.central * xi) / (r * r * r)));
+    }
+    if (s.gravitation !== 0)
+      for (let a = 0; a < this.bodies.length; ++a)
+        for (let c = a + 1; c < this.bodies.length; ++c) {
+          const xa = arr(this.bodies[a].GetCenterOfMassPosition()), xc = arr(this.bodies[c].GetCenterOfMassPosition());
+          const r = xc.map((x, i) => x - xa[i]), d = Math.hypot(...r);
+          const f = r.map((ri) => ((s.gravitation * this.masses[a] * this.masses[c]) / (d * d * d)) * ri);
+          force(a, f);
+          force(c, f.map((x) => -x));
+        }
+  }
+
+  step(h) {
+    ++this.steps;
+    this.applyForces();
+    this.jolt.Step(h, 1);
+    for (const b of this.bodies)
+      for (const x of [...arr(b.GetCenterOfMassPosition()), ...arr(b.GetLinearVelocity()), ...arr(b.GetAngularVelocity())])
+        if (!Number.isFinite(x)) throw new Error(`Jolt ${version}: step ${this.steps}: the state is not finite`);
+  }
+
+  reading() {
+    const frames = this.bodies.map((b) =>
+      frame(rotationOf(b.GetRotation()), arr(b.GetCenterOfMassPosition()), arr(b.GetLinearVelocity()), arr(b.GetAngularVelocity())),
+    );
+    return this.s.structure === 'one_body' ? { frame: frames[0] } : { links: frames };
+  }
+
+  free() {
+    for (const b of this.bodies) {
+      this.interface.RemoveBody(b.GetID());
+      this.interface.DestroyBody(b.GetID());
+    }
+    Jolt.destroy(this.jolt);
+  }
+}
+
+/** The principal moments Jolt computes for a shape: Shape.GetMassProperties() (about the
+ * centre of mass, at Jolt's density 1000) scaled to the shape's mass (MassProperties is linear
+ * in the density); Jolt's axis (y) for the cylinder and the capsule is the audit's z, whose
+ * moments are then reordered; convex radius 0 where a shape takes one. The shapes are
+ * reference-counted by Jolt and left to the child's exit (a few per audit). */
+function moments(shape) {
+  const [a, b, c] = shape.size;
+  let sh;
+  if (shape.name === 'box') sh = new Jolt.BoxShape(new Jolt.Vec3(a / 2, b / 2, c / 2), 0);
+  else if (shape.name === 'sphere') sh = new Jolt.SphereShape(a);
+  else if (shape.name === 'cylinder') sh = new Jolt.CylinderShape(b / 2, a, 0);
+  else if (shape.name === 'capsule') sh = new Jolt.CapsuleShape(b / 2, a);
+  else if (shape.name === 'two_spheres') {
+    const compound = new Jolt.StaticCompoundShapeSettings();
+    const ball = new Jolt.SphereShapeSettings(a);
+    compound.AddShape(new Jolt.Vec3(b, 0, 0), new Jolt.Quat(0, 0, 0, 1), ball, 0);
+    compound.AddShape(new Jolt.Vec3(-b, 0, 0), new Jolt.Quat(0, 0, 0, 1), ball, 0);
+    const result = compound.Create();
+    if (result.HasError()) throw new Error(`Jolt ${version}: ${result.GetError().c_str()}`);
+    sh = result.Get();
+  } else throw new Refused(`this client builds no ${shape.name} in Jolt ${version}`);
+  const p = sh.GetMassProperties();
+  const diagonal = arr(p.mInertia.GetDiagonal3()).map((x) => (x * shape.mass) / p.mMass);
+  return diagonal.sort((x, y) => x - y);
+}
+
+await serveEngine(
+  {
+    name: 'jolt',
+    origin:
+      `Jolt Physics ${version} (npm jolt-physics, WebAssembly, float) in Node ${process.version}: ` +
+      'JoltInterface.Step(h, 1), one collision step of PhysicsSystem.Update; its documentation declares no order',
+    integrators,
+  },
+  (integrator, scenario) => new Run(integrator, scenario),
+  moments,
+);
