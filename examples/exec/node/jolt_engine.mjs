@@ -1,9 +1,9 @@
 #!/usr/bin/env node
 // Jolt Physics (npm jolt-physics: the C++ engine compiled to WebAssembly) served to
 // mechcheck's audit as an engine (docs/protocol.md): PhysicsSystem.Update through
-// JoltInterface.Step at a fixed step, on the scenarios of free bodies (the tops, the box, a
-// projectile, Kepler's orbit, three bodies). Jointed scenarios are refused: this client
-// builds no constraints yet.
+// JoltInterface.Step at a fixed step, on every scenario it can express: free bodies (the
+// tops, the box, a projectile, Kepler's orbit, three bodies), a hinge or a ball to the world
+// (the pendulums, the heavy tops), the chains and the four-bar loop.
 //
 //   mechcheck-audit -o report --exec-engine -- node examples/exec/node/jolt_engine.mjs
 //
@@ -14,11 +14,15 @@
 // BodyCreationSettings.h), the angular velocity's clamp raised from its default 0.25 pi 60
 // rad/s to 1e6, sleeping off; gravity the PhysicsSystem's; the central force and the mutual
 // gravitation added by BodyInterface.AddForce before each step (Jolt clears a body's forces
-// after each step). Two integrators: mApplyGyroscopicForce off (Jolt's default) and on.
+// after each step). A hinge about y is a HingeConstraint, a ball a PointConstraint, each given
+// in world space at the start, to a static body at the origin (the bindings expose no
+// Body::sFixedToWorld) or between links; Jolt solves them iteratively (its PhysicsSettings:
+// mNumVelocitySteps, mNumPositionSteps at their defaults). Two integrators:
+// mApplyGyroscopicForce off (Jolt's default) and on.
 // Jolt computes in single precision (float) in this build.
 import initJolt from 'jolt-physics/wasm-compat';
 import { readFileSync } from 'node:fs';
-import { quaternionOf } from './bodies.mjs';
+import { chainLinks, cross, quaternionOf, rotate, sub } from './bodies.mjs';
 import { Refused, frame, scenarioOf, serveEngine } from './protocol.mjs';
 
 const Jolt = await initJolt();
@@ -66,8 +70,6 @@ class Run {
   constructor(integrator, scenario) {
     if (!integrators.some((i) => i.name === integrator)) throw new Refused(`no integrator ${integrator}`);
     const s = scenarioOf(scenario);
-    if (!(s.structure === 'free_bodies' || (s.structure === 'one_body' && s.joint === 'free')))
-      throw new Refused(`this client builds free bodies only (no constraints yet): ${s.name} has joints`);
     this.s = s;
     this.jolt = makeSystem(s.gravity);
     const bodies = this.jolt.GetPhysicsSystem().GetBodyInterface();
@@ -92,10 +94,52 @@ class Run {
       b.SetAngularVelocity(new Jolt.Vec3(...omega));
       return b;
     };
-    this.bodies =
-      s.structure === 'one_body'
-        ? [body(s.mass, s.inertia, s.rotation0, s.position0, s.velocity0, s.omega0)]
-        : s.links.map((l) => body(l.mass, l.inertia, [1, 0, 0, 0, 1, 0, 0, 0, 1], l.position0, l.velocity0, [0, 0, 0]));
+    const physics = this.jolt.GetPhysicsSystem();
+    let ground = null;
+    const fixed = () => {
+      if (ground) return ground;
+      const c = new Jolt.BodyCreationSettings(this.shape, new Jolt.RVec3(0, 0, 0), new Jolt.Quat(0, 0, 0, 1), Jolt.EMotionType_Static, LAYER);
+      ground = bodies.CreateBody(c);
+      Jolt.destroy(c);
+      bodies.AddBody(ground.GetID(), Jolt.EActivation_DontActivate);
+      return ground;
+    };
+    // A hinge about world y through a world point, or a ball at it, between two bodies.
+    const hinge = (point, a, b) => {
+      const c = new Jolt.HingeConstraintSettings();
+      c.mSpace = Jolt.EConstraintSpace_WorldSpace;
+      c.mPoint1 = c.mPoint2 = new Jolt.RVec3(...point);
+      c.mHingeAxis1 = c.mHingeAxis2 = new Jolt.Vec3(0, 1, 0);
+      c.mNormalAxis1 = c.mNormalAxis2 = new Jolt.Vec3(1, 0, 0);
+      physics.AddConstraint(c.Create(a, b));
+    };
+    const ball = (point, a, b) => {
+      const c = new Jolt.PointConstraintSettings();
+      c.mSpace = Jolt.EConstraintSpace_WorldSpace;
+      c.mPoint1 = c.mPoint2 = new Jolt.RVec3(...point);
+      physics.AddConstraint(c.Create(a, b));
+    };
+    this.bodies = [];
+    if (s.structure === 'one_body') {
+      const x = s.joint === 'free' ? s.position0 : rotate(s.rotation0, s.com);
+      const v = s.joint === 'free' ? s.velocity0 : cross(s.omega0, x);
+      const b = body(s.mass, s.inertia, s.rotation0, x, v, s.omega0);
+      this.bodies.push(b);
+      if (s.joint === 'hinge_y') hinge([0, 0, 0], fixed(), b);
+      else if (s.joint === 'ball') ball([0, 0, 0], fixed(), b);
+    } else if (s.structure === 'chain') {
+      let parent = null;
+      chainLinks(s).forEach((start, k) => {
+        const b = body(s.links[k].mass, s.links[k].inertia, start.rotation, start.com, start.velocity, start.omega);
+        this.bodies.push(b);
+        hinge(sub(start.com, rotate(start.rotation, s.links[k].com)), parent ?? fixed(), b);
+        parent = b;
+      });
+      if (s.loop) hinge(s.loop.anchor, parent, fixed());
+    } else {
+      for (const l of s.links) this.bodies.push(body(l.mass, l.inertia, [1, 0, 0, 0, 1, 0, 0, 0, 1], l.position0, l.velocity0, [0, 0, 0]));
+    }
+    this.ground = ground;
     this.masses = s.structure === 'one_body' ? [s.mass] : s.links.map((l) => l.mass);
     this.steps = 0;
   }
@@ -135,7 +179,7 @@ class Run {
   }
 
   free() {
-    for (const b of this.bodies) {
+    for (const b of this.ground ? [...this.bodies, this.ground] : this.bodies) {
       this.interface.RemoveBody(b.GetID());
       this.interface.DestroyBody(b.GetID());
     }
