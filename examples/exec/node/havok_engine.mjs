@@ -1,0 +1,192 @@
+#!/usr/bin/env node
+// Havok (npm @babylonjs/havok: the physics of Babylon.js, WebAssembly) served to mechcheck's
+// audit as an engine (docs/protocol.md): HP_World_Step at a fixed step, on every scenario it
+// can express: free bodies, a hinge or a ball to the world, the chains and the four-bar loop.
+//
+//   mechcheck-audit -o report --exec-engine -- node examples/exec/node/havok_engine.mjs
+//
+// The scenario's model: a DYNAMIC body per body with a sphere shape of radius 0.1 and its mass
+// properties given by HP_Body_SetMassProperties -- the centre of mass at the body's origin,
+// the mass, and the principal moments divided by the mass (HavokPhysics.d.ts: "Inertia for
+// mass of 1") -- linear and angular damping set to 0, always active; gravity the world's.
+// The ideal step time (HavokPhysics.d.ts: the solver parameters are "automatically adjusted"
+// when a step differs from it, default 1/60) is set to each step's h. Havok takes no force
+// from JavaScript, only impulses: the central force and the mutual gravitation are given as
+// the impulse F h at each step's start (HP_Body_ApplyImpulse at the centre of mass). A hinge
+// about y locks a constraint's three linear axes and its angular Y and Z, its X along world
+// y; a ball its linear axes; each to a STATIC body at the origin or between links, their
+// anchors in each body's frame at the start. Havok computes in single precision (float) in
+// this build.
+import HavokPhysics from '@babylonjs/havok';
+import { readFileSync } from 'node:fs';
+import { chainLinks, cross, quaternionOf, rotate, sub } from './bodies.mjs';
+import { Refused, frame, scenarioOf, serveEngine } from './protocol.mjs';
+
+const root = new URL('./node_modules/@babylonjs/havok/', import.meta.url);
+const HK = await HavokPhysics({ wasmBinary: readFileSync(new URL('lib/esm/HavokPhysics.wasm', root)) });
+const version = JSON.parse(readFileSync(new URL('package.json', root))).version;
+
+/** The value of a Havok call that returns [result, value]; its result checked. */
+function ok(what, r) {
+  const [result, ...value] = Array.isArray(r) ? r : [r];
+  if (result !== HK.Result.RESULT_OK) throw new Error(`Havok ${version}: ${what}: result ${result}`);
+  return value.length === 1 ? value[0] : value;
+}
+/** Row-major rotation of a quaternion [x, y, z, w]. */
+function rotationOf([x, y, z, w]) {
+  return [
+    1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
+    2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
+    2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y),
+  ];
+}
+/** R^T x, for R row-major: a world vector in the body's frame. */
+const inBody = (r, x) => [0, 1, 2].map((j) => r[j] * x[0] + r[3 + j] * x[1] + r[6 + j] * x[2]);
+
+const integrators = [{ name: 'step', origin: 'HP_World_Step with the ideal step time set to h' }];
+
+class Run {
+  constructor(integrator, scenario) {
+    if (!integrators.some((i) => i.name === integrator)) throw new Refused(`no integrator ${integrator}`);
+    const s = scenarioOf(scenario);
+    this.s = s;
+    this.world = ok('HP_World_Create', HK.HP_World_Create());
+    ok('HP_World_SetGravity', HK.HP_World_SetGravity(this.world, [0, 0, -s.gravity]));
+    this.shape = ok('HP_Shape_CreateSphere', HK.HP_Shape_CreateSphere([0, 0, 0], 0.1));
+    this.handles = [];
+    const make = (motion, mass, inertia, rotation, position, velocity, omega) => {
+      const b = ok('HP_Body_Create', HK.HP_Body_Create());
+      this.handles.push(b);
+      ok('HP_Body_SetShape', HK.HP_Body_SetShape(b, this.shape));
+      ok('HP_Body_SetMotionType', HK.HP_Body_SetMotionType(b, motion));
+      if (motion === HK.MotionType.DYNAMIC) {
+        ok('HP_Body_SetMassProperties', HK.HP_Body_SetMassProperties(b, [[0, 0, 0], mass, inertia.map((i) => i / mass), [0, 0, 0, 1]]));
+        ok('HP_Body_SetLinearDamping', HK.HP_Body_SetLinearDamping(b, 0));
+        ok('HP_Body_SetAngularDamping', HK.HP_Body_SetAngularDamping(b, 0));
+      }
+      const q = quaternionOf(rotation);
+      ok('HP_Body_SetQTransform', HK.HP_Body_SetQTransform(b, [position, [q.x, q.y, q.z, q.w]]));
+      ok('HP_World_AddBody', HK.HP_World_AddBody(this.world, b, false));
+      if (motion === HK.MotionType.DYNAMIC) {
+        ok('HP_Body_SetActivationControl', HK.HP_Body_SetActivationControl(b, HK.ActivationControl.ALWAYS_ACTIVE));
+        ok('HP_Body_SetLinearVelocity', HK.HP_Body_SetLinearVelocity(b, velocity));
+        ok('HP_Body_SetAngularVelocity', HK.HP_Body_SetAngularVelocity(b, omega));
+      }
+      return { id: b, rotation, position };
+    };
+    const identity = [1, 0, 0, 0, 1, 0, 0, 0, 1];
+    let ground = null;
+    const fixed = () => (ground ??= make(HK.MotionType.STATIC, 0, [0, 0, 0], identity, [0, 0, 0], [0, 0, 0], [0, 0, 0]));
+    // A joint at a world point between two bodies as they are at the start: a hinge about world
+    // y (constraint X along y, Y along x) or a ball.
+    const joint = (point, parent, child, hinge) => {
+      const c = ok('HP_Constraint_Create', HK.HP_Constraint_Create());
+      this.handles.push(null);
+      ok('HP_Constraint_SetParentBody', HK.HP_Constraint_SetParentBody(c, parent.id));
+      ok('HP_Constraint_SetChildBody', HK.HP_Constraint_SetChildBody(c, child.id));
+      for (const [set, b] of [[HK.HP_Constraint_SetAnchorInParent, parent], [HK.HP_Constraint_SetAnchorInChild, child]])
+        ok('HP_Constraint_SetAnchor', set(c, inBody(b.rotation, sub(point, b.position)), inBody(b.rotation, [0, 1, 0]), inBody(b.rotation, [1, 0, 0])));
+      const locked = [HK.ConstraintAxis.LINEAR_X, HK.ConstraintAxis.LINEAR_Y, HK.ConstraintAxis.LINEAR_Z];
+      if (hinge) locked.push(HK.ConstraintAxis.ANGULAR_Y, HK.ConstraintAxis.ANGULAR_Z);
+      for (const axis of locked) ok('HP_Constraint_SetAxisMode', HK.HP_Constraint_SetAxisMode(c, axis, HK.ConstraintAxisLimitMode.LOCKED));
+      ok('HP_Constraint_SetEnabled', HK.HP_Constraint_SetEnabled(c, 1));
+    };
+    this.bodies = [];
+    if (s.structure === 'one_body') {
+      const x = s.joint === 'free' ? s.position0 : rotate(s.rotation0, s.com);
+      const v = s.joint === 'free' ? s.velocity0 : cross(s.omega0, x);
+      const b = make(HK.MotionType.DYNAMIC, s.mass, s.inertia, s.rotation0, x, v, s.omega0);
+      this.bodies.push(b);
+      if (s.joint !== 'free') joint([0, 0, 0], fixed(), b, s.joint === 'hinge_y');
+    } else if (s.structure === 'chain') {
+      let parent = null;
+      chainLinks(s).forEach((start, k) => {
+        const b = make(HK.MotionType.DYNAMIC, s.links[k].mass, s.links[k].inertia, start.rotation, start.com, start.velocity, start.omega);
+        this.bodies.push(b);
+        joint(sub(start.com, rotate(start.rotation, s.links[k].com)), parent ?? fixed(), b, true);
+        parent = b;
+      });
+      if (s.loop) joint(s.loop.anchor, fixed(), parent, true);
+    } else {
+      for (const l of s.links) this.bodies.push(make(HK.MotionType.DYNAMIC, l.mass, l.inertia, identity, l.position0, l.velocity0, [0, 0, 0]));
+    }
+    this.masses = s.structure === 'one_body' ? [s.mass] : s.links.map((l) => l.mass);
+    this.steps = 0;
+  }
+
+  position(k) {
+    return ok('HP_Body_GetQTransform', HK.HP_Body_GetQTransform(this.bodies[k].id))[0];
+  }
+
+  applyImpulses(h) {
+    const s = this.s;
+    const impulse = (k, f) => ok('HP_Body_ApplyImpulse', HK.HP_Body_ApplyImpulse(this.bodies[k].id, this.position(k), f.map((x) => x * h)));
+    if (s.central !== 0) {
+      const x = this.position(0), r = Math.hypot(...x);
+      impulse(0, x.map((xi) => (-s.mass * s.central * xi) / (r * r * r)));
+    }
+    if (s.gravitation !== 0)
+      for (let a = 0; a < this.bodies.length; ++a)
+        for (let c = a + 1; c < this.bodies.length; ++c) {
+          const xa = this.position(a), r = sub(this.position(c), xa), d = Math.hypot(...r);
+          const f = r.map((ri) => ((s.gravitation * this.masses[a] * this.masses[c]) / (d * d * d)) * ri);
+          impulse(a, f);
+          impulse(c, f.map((x) => -x));
+        }
+  }
+
+  step(h) {
+    if (!(h > 0)) throw new Error(`Havok ${version}: HP_World_Step takes a positive step, got ${h}`);
+    ++this.steps;
+    ok('HP_World_SetIdealStepTime', HK.HP_World_SetIdealStepTime(this.world, h));
+    this.applyImpulses(h);
+    ok('HP_World_Step', HK.HP_World_Step(this.world, h));
+    for (let k = 0; k < this.bodies.length; ++k)
+      for (const x of [...this.position(k), ...ok('v', HK.HP_Body_GetLinearVelocity(this.bodies[k].id))])
+        if (!Number.isFinite(x)) throw new Error(`Havok ${version}: step ${this.steps}: the state is not finite`);
+  }
+
+  reading() {
+    const frames = this.bodies.map((b) => {
+      const [x, q] = ok('HP_Body_GetQTransform', HK.HP_Body_GetQTransform(b.id));
+      return frame(rotationOf(q), x, ok('v', HK.HP_Body_GetLinearVelocity(b.id)), ok('w', HK.HP_Body_GetAngularVelocity(b.id)));
+    });
+    return this.s.structure === 'one_body' ? { frame: frames[0] } : { links: frames };
+  }
+
+  free() {
+    HK.HP_World_Release(this.world);
+  }
+}
+
+/** The principal moments Havok computes for a shape: HP_Shape_BuildMassProperties (at the
+ * shape's default density; its inertia is "for mass of 1", so times the shape's mass). */
+function moments(shape) {
+  const [a, b, c] = shape.size;
+  let sh;
+  if (shape.name === 'box') sh = ok('box', HK.HP_Shape_CreateBox([0, 0, 0], [0, 0, 0, 1], [a, b, c]));
+  else if (shape.name === 'sphere') sh = ok('sphere', HK.HP_Shape_CreateSphere([0, 0, 0], a));
+  else if (shape.name === 'cylinder') sh = ok('cylinder', HK.HP_Shape_CreateCylinder([0, 0, -b / 2], [0, 0, b / 2], a));
+  else if (shape.name === 'capsule') sh = ok('capsule', HK.HP_Shape_CreateCapsule([0, 0, -b / 2], [0, 0, b / 2], a));
+  else if (shape.name === 'two_spheres') {
+    sh = ok('container', HK.HP_Shape_CreateContainer());
+    for (const x of [b, -b]) {
+      const ball = ok('sphere', HK.HP_Shape_CreateSphere([0, 0, 0], a));
+      ok('HP_Shape_AddChild', HK.HP_Shape_AddChild(sh, ball, [[x, 0, 0], [0, 0, 0, 1], [1, 1, 1]]));
+    }
+  } else throw new Refused(`this client builds no ${shape.name} in Havok ${version}`);
+  const [, , inertia] = ok('HP_Shape_BuildMassProperties', HK.HP_Shape_BuildMassProperties(sh));
+  return inertia.map((i) => i * shape.mass).sort((x, y) => x - y);
+}
+
+await serveEngine(
+  {
+    name: 'havok',
+    origin:
+      `Havok ${version} (npm @babylonjs/havok, WebAssembly) in Node ${process.version}: HP_World_Step ` +
+      '("Simulate the world and advance time by `timestep` seconds", HavokPhysics.d.ts); no order declared',
+    integrators,
+  },
+  (integrator, scenario) => new Run(integrator, scenario),
+  moments,
+);
