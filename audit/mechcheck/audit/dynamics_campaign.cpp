@@ -41,7 +41,7 @@ std::string vector_text(const Eigen::MatrixXd& m) {
 /// disagreement (then RapidCheck shrinks it, and the last failing case is the minimal one).
 dynamics_campaign campaign(const std::string& name, const std::string& origin, const dynamics_checker& checker,
                            const dynamics_options& opt, const std::function<generators::robot_case()>& draw,
-                           const std::string& selector) {
+                           const std::string& selector, const robots::robot* user = nullptr) {
   dynamics_campaign c;
   c.library = name;
   c.origin = origin;
@@ -96,9 +96,11 @@ dynamics_campaign campaign(const std::string& name, const std::string& origin, c
           << " (budget " << r.budget << ")\n  q = " << vector_text(state_of(rc).q) << "\n  qdot = " << vector_text(state_of(rc).qdot)
           << "\n  qddot = " << vector_text(state_of(rc).qddot) << "\n  tau = " << vector_text(state_of(rc).tau)
           << "\n  " << name << ": " << vector_text(r.library) << "\n  reference: " << vector_text(r.reference)
-          << "\n  seed " << opt.seed << ", " << opt.robots << " robots of at most " << opt.max_links
-          << " links (mechcheck-audit --robots " << opt.robots << " --seed " << opt.seed << " "
-          << (selector.empty() ? "--dynamics " + name : selector) << " finds and shrinks it again)";
+          << "\n  seed " << opt.seed << ", "
+          << (user ? std::to_string(opt.robots) + " states of robot " + user->name
+                   : std::to_string(opt.robots) + " robots of at most " + std::to_string(opt.max_links) + " links")
+          << " (mechcheck-audit " << (user ? "--urdf <its URDF> " : "") << "--robots " << opt.robots << " --seed "
+          << opt.seed << " " << (selector.empty() ? "--dynamics " + name : selector) << " finds and shrinks it again)";
         c.disagreement = s.str();
         c.counterexample_urdf = to_urdf(rc.robot);
         RC_FAIL(c.disagreement);
@@ -137,7 +139,7 @@ dynamics_campaign run_dynamics_checker(const std::string& name, const std::strin
       rc.tau.push_back(*generators::dyadic_towards_zero(4));
     }
     return rc;
-  }, selector);
+  }, selector, robot);
   c.max_links = t.dofs;
   return c;
 }
