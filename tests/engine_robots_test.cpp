@@ -5,7 +5,7 @@
 // inertias; its variant that builds the robot with each inertia turned the wrong way stalls
 // and is contradicted -- unless it says which robot it holds, when it is measured against
 // that one. The engines found in this build (MuJoCo, DART, Simbody, Bullet's multibody)
-// start where the scenario says and take a first step the reference agrees with to h^2.
+// start where the scenario says and take a first step within two first-order local errors.
 
 #include <gtest/gtest.h>
 
@@ -237,6 +237,10 @@ TEST(EngineRobots, EveryEngineThatBuildsRobotsStartsWhereTheScenarioSaysAndAgree
   const Eigen::VectorXd x0 = s.exact(0);
   const double h = 1.0 / 1024;
   const Eigen::VectorXd x1 = s.exact(h);
+  // h^2 |x''| of the exact motion x = (q, qdot), to O(h^3): twice a first-order method's
+  // local error h^2 |x''| / 2 (the semi-implicit Euler steps measure 5.0 h^2 here against
+  // 10.0 h^2 for this bound; a start or a coordinate mapped wrong is off by order h).
+  const double two_local_errors = (s.exact(2 * h) - 2 * x1 + x0).norm();
   int engines = 0;
   for (const auto& e : audit::engines_found()) {
     if (!e.robots) continue;
@@ -251,11 +255,9 @@ TEST(EngineRobots, EveryEngineThatBuildsRobotsStartsWhereTheScenarioSaysAndAgree
     const Eigen::VectorXd start = audit::observe(s, run->read()).observables;
     EXPECT_LE((start - x0).norm(), 4 * eps * x0.norm()) << e.name;
     run->step(h);
-    // One step's error: of order h^2 for a first-order method (|qddot| h^2, |qddot| below 64
-    // here): a start or a coordinate mapped wrong is off by order h or more. (A wrong model
-    // is the order study's to find: its one-step error is of order h^2 as well.)
+    // (A wrong model is the order study's to find: its one-step error is of order h^2 too.)
     const Eigen::VectorXd after = audit::observe(s, run->read()).observables;
-    EXPECT_LE((after - x1).norm(), 64 * h * h) << e.name;
+    EXPECT_LE((after - x1).norm(), two_local_errors) << e.name;
   }
   if (engines == 0) GTEST_SKIP() << "no engine of this build builds robots";
 }

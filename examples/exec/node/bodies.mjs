@@ -36,6 +36,13 @@ export function quaternionOf(r) {
   return { w: (m10 - m01) / s, x: (m02 + m20) / s, y: (m12 + m21) / s, z: s / 4 };
 }
 
+/** A one-body scenario's body at its start, in the world: its centre of mass and that point's
+ * velocity (a jointed body's pivot is the world origin, its centre of mass at R0 com). */
+export function oneBodyStart(s) {
+  const com = s.joint === 'free' ? s.position0 : rotate(s.rotation0, s.com);
+  return { com, velocity: s.joint === 'free' ? s.velocity0 : cross(s.omega0, com) };
+}
+
 /** Each link of a chain scenario at its start, in the world: its rotation, its centre of mass,
  * that point's velocity and the angular velocity. Each link's frame is its parent's turned
  * about y by its joint angle, at its hinge (link::hinge in the parent's frame, link 0's in

@@ -16,7 +16,7 @@
 // rigid one (said to the audit as the run's model_differs). The engine declares no order.
 import * as CANNON from 'cannon-es';
 import { readFileSync } from 'node:fs';
-import { chainLinks, cross, quaternionOf, rotate, sub } from './bodies.mjs';
+import { chainLinks, oneBodyStart, quaternionOf, sub } from './bodies.mjs';
 import { Refused, frame, scenarioOf, serveEngine } from './protocol.mjs';
 
 const version = JSON.parse(readFileSync(new URL('./node_modules/cannon-es/package.json', import.meta.url))).version;
@@ -66,8 +66,7 @@ class Run {
     const ground = new CANNON.Body({ mass: 0 });
     world.addBody(ground);
     if (s.structure === 'one_body') {
-      const x = s.joint === 'free' ? s.position0 : rotate(s.rotation0, s.com);
-      const v = s.joint === 'free' ? s.velocity0 : cross(s.omega0, x);
+      const { com: x, velocity: v } = oneBodyStart(s);
       const b = body(s.mass, s.inertia, s.rotation0, x, v, s.omega0);
       world.addBody(b);
       this.bodies.push(b);

@@ -19,7 +19,7 @@
 // this build.
 import HavokPhysics from '@babylonjs/havok';
 import { readFileSync } from 'node:fs';
-import { chainLinks, cross, quaternionOf, rotate, sub } from './bodies.mjs';
+import { chainLinks, oneBodyStart, quaternionOf, rotate, sub } from './bodies.mjs';
 import { Refused, frame, scenarioOf, serveEngine } from './protocol.mjs';
 
 const root = new URL('./node_modules/@babylonjs/havok/', import.meta.url);
@@ -93,8 +93,7 @@ class Run {
     };
     this.bodies = [];
     if (s.structure === 'one_body') {
-      const x = s.joint === 'free' ? s.position0 : rotate(s.rotation0, s.com);
-      const v = s.joint === 'free' ? s.velocity0 : cross(s.omega0, x);
+      const { com: x, velocity: v } = oneBodyStart(s);
       const b = make(HK.MotionType.DYNAMIC, s.mass, s.inertia, s.rotation0, x, v, s.omega0);
       this.bodies.push(b);
       if (s.joint !== 'free') joint([0, 0, 0], fixed(), b, s.joint === 'hinge_y');

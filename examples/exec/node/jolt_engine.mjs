@@ -22,7 +22,7 @@
 // Jolt computes in single precision (float) in this build.
 import initJolt from 'jolt-physics/wasm-compat';
 import { readFileSync } from 'node:fs';
-import { chainLinks, cross, quaternionOf, rotate, sub } from './bodies.mjs';
+import { chainLinks, oneBodyStart, quaternionOf, rotate, sub } from './bodies.mjs';
 import { Refused, frame, scenarioOf, serveEngine } from './protocol.mjs';
 
 const Jolt = await initJolt();
@@ -121,8 +121,7 @@ class Run {
     };
     this.bodies = [];
     if (s.structure === 'one_body') {
-      const x = s.joint === 'free' ? s.position0 : rotate(s.rotation0, s.com);
-      const v = s.joint === 'free' ? s.velocity0 : cross(s.omega0, x);
+      const { com: x, velocity: v } = oneBodyStart(s);
       const b = body(s.mass, s.inertia, s.rotation0, x, v, s.omega0);
       this.bodies.push(b);
       if (s.joint === 'hinge_y') hinge([0, 0, 0], fixed(), b);

@@ -19,7 +19,7 @@
 // or between links. Rapier computes in single precision (f32) in this build.
 import RAPIER from '@dimforge/rapier3d-compat';
 import { readFileSync } from 'node:fs';
-import { chainLinks, cross, quaternionOf, rotate, sub } from './bodies.mjs';
+import { chainLinks, oneBodyStart, quaternionOf, sub } from './bodies.mjs';
 import { Refused, frame, scenarioOf, serveEngine } from './protocol.mjs';
 
 await RAPIER.init();
@@ -63,8 +63,7 @@ class Run {
     const joint = (data, a, b) => world.createImpulseJoint(data, a, b, true);
     this.bodies = [];
     if (s.structure === 'one_body') {
-      const x = s.joint === 'free' ? s.position0 : rotate(s.rotation0, s.com);
-      const v = s.joint === 'free' ? s.velocity0 : cross(s.omega0, x);
+      const { com: x, velocity: v } = oneBodyStart(s);
       const b = body(s.mass, s.inertia, s.rotation0, x, v, s.omega0);
       this.bodies.push(b);
       const pivot = v3(s.com.map((c) => -c)); // the pivot in the body's frame (its origin at the centre of mass)

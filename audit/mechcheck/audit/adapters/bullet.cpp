@@ -473,7 +473,7 @@ std::vector<engine_integrator> integrators() {
   m.name = multibody_run::name;
   m.origin = "Bullet " + version() + " (bullet-float64), btMultiBody on a fixed base (setupRevolute "
              "for a hinge, setupSpherical for a ball joint, a chain of revolute links, a loop closed by "
-             "btMultiBodyPoint2Point; a robot as the dynamics audit builds it, on its links' principal axes; damping 0) in a btMultiBodyDynamicsWorld, stepSimulation(h, 0); Bullet states "
+             "btMultiBodyPoint2Point; damping 0) in a btMultiBodyDynamicsWorld, stepSimulation(h, 0); Bullet states "
              "no order; free bodies refused";
   m.start = [](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<multibody_run>(s); };
   m.multibody = true;

@@ -79,7 +79,7 @@ std::string robot_mjcf(const robots::robot& r) {
 }
 
 robots::robot robot_of(const mjModel* m, const std::vector<int>& dof_of_coordinate) {
-  const int n_ = static_cast<int>(dof_of_coordinate.size());
+  const int n = static_cast<int>(dof_of_coordinate.size());
   const auto body_name = [m](int b) {
     const char* name = mj_id2name(m, mjOBJ_BODY, b);
     return name && *name ? std::string(name) : "body" + std::to_string(b);
@@ -87,7 +87,7 @@ robots::robot robot_of(const mjModel* m, const std::vector<int>& dof_of_coordina
   robots::robot r;
   r.name = "mujoco";
   for (int i = 0; i < 3; ++i) r.gravity(i) = m->opt.gravity[i];
-  std::vector<robots::joint> moving(static_cast<std::size_t>(n_)), fixed;
+  std::vector<robots::joint> moving(static_cast<std::size_t>(n)), fixed;
   for (int b = 0; b < m->nbody; ++b) {
     robots::link l;
     l.name = body_name(b);
