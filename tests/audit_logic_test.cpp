@@ -177,6 +177,48 @@ TEST(audit_studies, fit_halvings_uses_the_median_of_the_last_three_resolvable) {
   EXPECT_EQ(audit::fit_halvings({pts[4]}, 1e-10).used, 0);
 }
 
+TEST(audit_studies, an_engines_rounding_rise_ends_the_fit_within_its_precisions_budget_only) {
+  // A first-order engine in single precision: truncation 0.04 (h / h0) over n = 32 .. 16384
+  // steps, plus a rounding of 4 u a step all biased alike (Rapier's measured size), which
+  // overtakes it at n ~ 2^10.
+  const double u = 0x1p-23, h0 = 0.125;
+  const auto study_of = [&](double bias, double unit) {
+    audit::order_study st;
+    for (long n = 32; n <= 16384; n *= 2) {
+      const double h = h0 * 32 / double(n);
+      st.points.push_back({h, 0.04 * h / h0 + bias * unit * double(n), double(n), -1});
+    }
+    audit::fit_global(st, unit);
+    return st;
+  };
+  auto single = study_of(4, u);
+  EXPECT_LT(single.fit.value, 0);  // the last three halvings are the rise
+  audit::end_fit_at_rounding_rise(single, u);
+  ASSERT_TRUE(single.rounding_rise_h);
+  EXPECT_DOUBLE_EQ(*single.rounding_rise_h, h0 * 32 / 4096);  // the minimum at n = 2048
+  // The runs 100 times above the measured rounding (e / n at the finest) are n = 32, 64, 128.
+  EXPECT_NEAR(single.fit.value, 1, 0.01);
+  EXPECT_EQ(single.fit.used, 2);
+  // The same rise, 32 u a step: beyond the budget of 16 u a step, a defect left to the fit.
+  auto beyond = study_of(32, u);
+  const double before = beyond.fit.value;
+  audit::end_fit_at_rounding_rise(beyond, u);
+  EXPECT_FALSE(beyond.rounding_rise_h);
+  EXPECT_EQ(beyond.fit.value, before);
+  // Measured against double's epsilon the rise of 4 float epsilons a step is no rounding.
+  auto as_double = study_of(4, u);
+  audit::end_fit_at_rounding_rise(as_double, 0x1p-52);
+  EXPECT_FALSE(as_double.rounding_rise_h);
+  // A dip (a zero of the error constant) followed by a fall is no rise: the fit stays.
+  audit::order_study dip;
+  for (const double e : {1e-2, 5e-3, 1e-6, 1.2e-3, 6e-4, 3e-4}) dip.points.push_back({1, e, 100, -1});
+  audit::fit_global(dip, u);
+  const double dip_fit = dip.fit.value;
+  audit::end_fit_at_rounding_rise(dip, u);
+  EXPECT_FALSE(dip.rounding_rise_h);
+  EXPECT_EQ(dip.fit.value, dip_fit);
+}
+
 TEST(audit_studies, the_local_study_stops_at_its_floor_of_16_eps_per_evaluation) {
   // The oscillator's exact flow plus an error of exactly C h^5 along q_0, in a step of 16
   // evaluations: the floor is 16 eps 16 = 256 eps. The study starts at 8 h_local = 4 and

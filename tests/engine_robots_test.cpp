@@ -135,7 +135,7 @@ audit::scenario skew_scenario() {
 
 audit::engine_options robot_options(const audit::scenario& s) {
   audit::engine_options o;
-  o.robots = {s};
+  o.drawn = {s};
   o.scenarios = {s.name};
   o.long_run_steps = 0;
   o.max_study_steps = 1 << 10;

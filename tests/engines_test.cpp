@@ -27,7 +27,15 @@ using outcome = audit::verdict::outcome;
 constexpr double damping = 0.5;
 
 /// How the reference engine steps.
-enum class method { rk4, euler, symplectic_euler, verlet, rotations, damped };
+enum class method {
+  rk4,
+  euler,
+  symplectic_euler,
+  verlet,
+  rotations,
+  damped,
+  rk4_world_turn,  ///< RK4 with the body rates taken as world ones in q' (a wrong orientation update)
+};
 
 /// A reference engine: the scenario's equations of motion stepped by RK4, explicit Euler
 /// or (the pendulum only) symplectic Euler, with the gyroscopic term's sign as given.
@@ -43,6 +51,12 @@ class reference_run final : public audit::engine_run {
         y_.resize(7);
         y_ << s.omega0, 1, 0, 0, 0;  // omega (body = world at t = 0), quaternion (w, x, y, z)
         break;
+      case audit::scenario_kind::free_body: {  // principal axes turned by rotation0
+        const Eigen::Quaterniond q0(s.rotation0);
+        y_.resize(7);
+        y_ << s.rotation0.transpose() * s.omega0, q0.w(), q0.x(), q0.y(), q0.z();
+        break;
+      }
       case audit::scenario_kind::pendulum_small:
       case audit::scenario_kind::pendulum_large:
         y_.resize(2);
@@ -58,7 +72,8 @@ class reference_run final : public audit::engine_run {
       const Eigen::Vector3d w = y.head<3>(), m = s_.inertia.cwiseProduct(w);
       d.head<3>() = (sign_ * m.cross(w)).cwiseQuotient(s_.inertia);  // I w' = M x w
       const Eigen::Quaterniond q(y(3), y(4), y(5), y(6)), wq(0, w(0), w(1), w(2));
-      const Eigen::Quaterniond dq = q * wq;  // q' = q (0, w) / 2, body-frame w
+      // q' = q (0, w) / 2, body-frame w; the wrong variant turns the body about world axes
+      const Eigen::Quaterniond dq = method_ == method::rk4_world_turn ? wq * q : q * wq;
       d.tail<4>() << dq.w() / 2, dq.x() / 2, dq.y() / 2, dq.z() / 2;
     } else {
       d << y(1), -s_.mass * s_.gravity * -s_.com(2) / audit::hinge_inertia(s_) * std::sin(y(0));
@@ -66,6 +81,7 @@ class reference_run final : public audit::engine_run {
     return d;
   }
   void step(double h) override {
+    t_ += h;
     if (method_ == method::euler) {
       y_ += h * f(y_);
       return;
@@ -98,6 +114,8 @@ class reference_run final : public audit::engine_run {
     if (y_.size() == 7) {
       r.rotation = Eigen::Quaterniond(y_(3), y_(4), y_(5), y_(6)).normalized().toRotationMatrix();
       r.omega = r.rotation * y_.head<3>();
+      r.position = s_.position0 + t_ * s_.velocity0;  // free motion of the centre of mass
+      r.velocity = s_.velocity0;
     } else {
       r.rotation = Eigen::AngleAxisd(y_(0), Eigen::Vector3d::UnitY()).toRotationMatrix();
       r.position = r.rotation * s_.com;
@@ -123,6 +141,7 @@ class reference_run final : public audit::engine_run {
   method method_;
   double sign_;
   Eigen::VectorXd y_;
+  double t_ = 0;
 };
 
 audit::engine_integrator reference_engine(const std::string& name, method m, double sign, int declared) {
@@ -581,6 +600,77 @@ TEST(engines, the_shape_audit_has_known_answers) {
   const double r = two.size(0), d = two.size(1), m = two.mass;
   const Eigen::Vector3d expected(0.4 * m * r * r, 0.4 * m * r * r + m * d * d, 0.4 * m * r * r + m * d * d);
   EXPECT_LT((audit::exact_principal_moments(two) - expected).cwiseQuotient(expected).cwiseAbs().maxCoeff(), 4 * eps);
+}
+
+TEST(engines, random_bodies_are_drawn_by_their_seed_and_start_where_their_references_do) {
+  const auto four = audit::random_body_scenarios(4, 7), two = audit::random_body_scenarios(2, 7);
+  const auto other = audit::random_body_scenarios(1, 8);
+  ASSERT_EQ(four.size(), 4u);
+  EXPECT_EQ(four[1].name, "body_7_1");
+  for (int k = 0; k < 2; ++k) EXPECT_EQ(four[k].description, two[k].description);
+  EXPECT_NE(four[0].description, other[0].description);
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  for (const auto& s : four) {
+    EXPECT_TRUE(s.inertia(0) < s.inertia(1) && s.inertia(1) < s.inertia(2) && s.inertia(2) < s.inertia(0) + s.inertia(1));
+    const Eigen::Vector3d body = s.rotation0.transpose() * s.omega0;
+    EXPECT_GE((body.array() != 0).count(), 2) << s.name;  // about no principal axis
+    EXPECT_FALSE(s.rotation0.isIdentity(0.1)) << s.name;
+    // The observation of the start the engine is given is the reference at 0, to rounding.
+    audit::body_reading start;
+    start.rotation = s.rotation0;
+    start.omega = s.omega0;
+    start.position = s.position0;
+    start.velocity = s.velocity0;
+    const Eigen::VectorXd seen = audit::observe(s, start).observables, exact = s.exact(0);
+    EXPECT_LE((seen - exact).norm() / s.scale, 16 * eps) << s.name;
+    // Energy and angular momentum of the reference: |I Omega| and Omega.I Omega kept.
+    const Eigen::VectorXd later = s.exact(s.t_end);
+    const Eigen::Vector3d w0 = exact.head<3>(), w1 = later.head<3>();
+    EXPECT_NEAR(w1.dot(s.inertia.cwiseProduct(w1)), w0.dot(s.inertia.cwiseProduct(w0)),
+                64 * eps * w0.dot(s.inertia.cwiseProduct(w0)));
+    EXPECT_NEAR(later.segment<3>(3).norm(), 1, 16 * eps);
+    EXPECT_LE((later.segment<3>(6) - (s.position0 + s.t_end * s.velocity0)).norm(), 16 * eps * s.scale);
+  }
+}
+
+TEST(engines, rk4_is_of_order_4_on_random_bodies_in_every_class_and_a_wrong_turn_is_caught_in_the_orientation) {
+  audit::engine_options opt = short_runs();
+  opt.drawn = audit::random_body_scenarios(3, 1);
+  for (const auto& s : opt.drawn) opt.scenarios.push_back(s.name);
+  const auto a = audit::audit_engine(reference_engine("reference::RK4", method::rk4, 1, 4), opt);
+  EXPECT_EQ(a.order.result, outcome::confirmed) << a.order.evidence;
+  ASSERT_EQ(a.scenarios.size(), 3u);
+  for (const auto& s : a.scenarios) {
+    ASSERT_EQ(s.refused + s.failure, "") << s.scenario;
+    for (const auto& [name, study] : s.classes)
+      if (name == "angular velocity" || name == "orientation") EXPECT_NEAR(study.fit.value, 4, 0.3) << s.scenario << " " << name;
+  }
+  // Turned about the world's axes by the body's rates: Euler's equations still hold, so the
+  // body angular velocity is of order 4, but the orientation stalls.
+  const auto w = audit::audit_engine(reference_engine("reference::RK4_world_turn", method::rk4_world_turn, 1, 4), opt);
+  EXPECT_EQ(w.order.result, outcome::contradicted) << w.order.evidence;
+  for (const auto& s : w.scenarios)
+    for (const auto& [name, study] : s.classes) {
+      if (name == "angular velocity") EXPECT_NEAR(study.fit.value, 4, 0.3) << s.scenario;
+      if (name == "orientation") EXPECT_TRUE(study.stalled) << s.scenario;
+    }
+  // The gyroscopic term's sign flipped: the angular velocity stalls too.
+  const auto g = audit::audit_engine(reference_engine("reference::RK4_sign", method::rk4, -1, 4), opt);
+  EXPECT_EQ(g.order.result, outcome::contradicted) << g.order.evidence;
+}
+
+TEST(engines, a_free_body_scenario_refuses_what_is_not_a_free_asymmetric_body) {
+  const Eigen::Matrix3d one = Eigen::Matrix3d::Identity();
+  const Eigen::Vector3d zero = Eigen::Vector3d::Zero(), w(1, 0.2, 0.5);
+  EXPECT_NO_THROW(audit::free_body_scenario("ok", 1, {1, 2, 2.5}, one, zero, zero, w));
+  EXPECT_THROW(audit::free_body_scenario("b", 1, {1, 1, 2}, one, zero, zero, w), domain_error);    // symmetric
+  EXPECT_THROW(audit::free_body_scenario("b", 1, {1, 2, 3.5}, one, zero, zero, w), domain_error);  // triangle
+  EXPECT_THROW(audit::free_body_scenario("b", 0, {1, 2, 2.5}, one, zero, zero, w), domain_error);
+  EXPECT_THROW(audit::free_body_scenario("b", 1, {1, 2, 2.5}, 2 * one, zero, zero, w), domain_error);
+  EXPECT_THROW(audit::free_body_scenario("b", 1, {1, 2, 2.5}, one, zero, zero, zero), domain_error);
+  EXPECT_THROW(audit::free_body_scenario("b", 1, {1, 2, 2.5}, one, zero, zero, {0, 1, 0}), domain_error);  // separatrix
+  EXPECT_THROW(audit::free_body_scenario("b", 1, {1, 2, 2.5}, one, zero, zero, {NAN, 0, 1}), non_finite_error);
+  EXPECT_THROW(audit::random_body_scenarios(-1, 1), domain_error);
 }
 
 }  // namespace engines_test

@@ -170,4 +170,17 @@ TEST(exec_dynamics, a_handshake_lists_known_quantities_once) {
   EXPECT_THROW(parse_handshake(head + R"("quantities": ["bias"]})", "engine"), audit::exec_error);
 }
 
+TEST(exec_dynamics, an_engines_precision_sets_its_epsilon) {
+  using audit::exec_protocol::parse_handshake;
+  const std::string head = R"({"protocol": "mechcheck", "version": 1, "kind": "engine", "name": "e", )"
+                           R"("integrators": [{"name": "step"}])";
+  EXPECT_EQ(parse_handshake(head + "}", "engine").epsilon, 0x1p-52);
+  EXPECT_EQ(parse_handshake(head + R"(, "precision": "double"})", "engine").epsilon, 0x1p-52);
+  EXPECT_EQ(parse_handshake(head + R"(, "precision": "single"})", "engine").epsilon, 0x1p-23);
+  EXPECT_THROW(parse_handshake(head + R"(, "precision": "f32"})", "engine"), audit::exec_error);
+  const std::string dynamics = R"({"protocol": "mechcheck", "version": 1, "kind": "dynamics", "name": "d", )";
+  EXPECT_THROW(parse_handshake(dynamics + R"("quantities": ["bias"], "precision": "single"})", "dynamics"),
+               audit::exec_error);
+}
+
 }  // namespace exec_dynamics_test

@@ -65,6 +65,13 @@ expect 0 "audited [0-9]+ engine integrators" --engine '*' --engine-robots 1 --en
   --scenario 'robot_*' --engine-long-run-steps 100 -q -o "$work/robots"
 grep -q '<robot name="robot_1_0">' "$work/robots/robots/robot_1_0.urdf" ||
   { echo "FAILED: --engine-robots wrote no robots/robot_1_0.urdf"; failed=1; }
+# Random free bodies: named by their seed, described in the report (principal axes turned,
+# the body angular velocity drawn).
+expect 0 "audited [0-9]+ engine integrators" --engine '*' --engine-bodies 2 --seed 3 --scenario 'body_*' \
+  --engine-long-run-steps 100 -q -o "$work/bodies"
+grep -q '"scenario": "body_3_1"' "$work/bodies/engines.json" ||
+  { echo "FAILED: --engine-bodies 2 --seed 3 audited no body_3_1"; failed=1; }
+expect 1 "names no scenario" --engine '*' --engine-bodies 1 --scenario 'body_2_*' -q -o "$work/bodies"
 # --require-measured: a child that refuses the scenario asked for (the test engine builds hinge
 # pendulums only) measured nothing and fails the gate, naming the scenario and its words; on a
 # pendulum it passes. Without the flag the refusal is a row of the report, status 0.

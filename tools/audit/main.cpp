@@ -217,7 +217,7 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   app.add_option("--robots", dynamics_robots, "with --dynamics: random robots (or states of --urdf robots; default 100)")
       ->check(CLI::Range(1, 1000000));
-  app.add_option("--seed", dynamics_seed, "the seed of the random robots (--dynamics, --engine-robots; default 1)");
+  app.add_option("--seed", dynamics_seed, "the seed of the random robots and bodies (--dynamics, --engine-robots, --engine-bodies; default 1)");
   std::vector<std::string> engine_scenarios, scenario_names;
   for (const auto& s : audit::scenarios()) scenario_names.push_back(s.name);
   int engine_robots = 0, engine_robot_links = 3;
@@ -230,8 +230,14 @@ int main(int argc, char** argv) {
                  "with --engine-robots: at most this many links a robot (1 to 8, default 3; the reference's cost "
                  "grows with the square of the moving joints)")
       ->check(CLI::Range(1, 8));
+  int engine_bodies = 0;
+  app.add_option("--engine-bodies", engine_bodies,
+                 "with --engine: N random free bodies (principal axes turned anywhere, spun about none of them; "
+                 "--seed) as scenarios beside the hand-built ones, named body_<seed>_<k>")
+      ->check(CLI::Range(0, 1000));
   app.add_option("--scenario", engine_scenarios,
-                 "engine scenarios, as shell patterns (default all; 'robot_*' the --engine-robots alone)");
+                 "engine scenarios, as shell patterns (default all; 'robot_*' the --engine-robots alone, "
+                 "'body_*' the --engine-bodies)");
   long long engine_long_run_steps = 100000;
   app.add_option("--engine-long-run-steps", engine_long_run_steps, "steps of the engines' long run (0: none)")
       ->check(CLI::Range(0LL, 100000000LL));
@@ -495,11 +501,13 @@ int main(int argc, char** argv) {
     // The random robots drawn once: every integrator shares their certified references.
     const std::vector<audit::scenario> robots =
         audit::random_robot_scenarios(engine_robots, dynamics_seed, engine_robot_links);
+    std::vector<audit::scenario> drawn = robots;
+    for (auto& b : audit::random_body_scenarios(engine_bodies, dynamics_seed)) drawn.push_back(std::move(b));
     // The scenarios' patterns as names: each must name one at least.
     std::vector<std::string> scenarios_named;
     for (const auto& pattern : engine_scenarios) {
       std::vector<std::string> all = scenario_names;
-      for (const auto& r : robots) all.push_back(r.name);
+      for (const auto& r : drawn) all.push_back(r.name);
       std::string known;
       bool any = false;
       for (const auto& n : all) {
@@ -514,7 +522,7 @@ int main(int argc, char** argv) {
     for (const auto& e : engines) {
       audit::engine_options eopt;
       eopt.scenarios = scenarios_named;
-      eopt.robots = robots;
+      eopt.drawn = drawn;
       eopt.long_run_steps = engine_long_run_steps;
       eopt.timing = timing;
       if (!quiet) eopt.progress = progress;

@@ -142,6 +142,13 @@ engine_observation observe(const scenario& s, const body_reading& r) {
     case scenario_kind::boxes:
       o.observables = wb;
       break;
+    case scenario_kind::free_body: {
+      // The fixed angular momentum's direction in the world, from the start the engine was given.
+      const Eigen::Vector3d m0 = s.rotation0 * s.inertia.cwiseProduct(s.rotation0.transpose() * s.omega0);
+      o.observables.resize(12);
+      o.observables << wb, r.rotation.transpose() * m0.normalized(), r.position, r.velocity;
+      break;
+    }
     case scenario_kind::free_symmetric_top:
       o.observables.resize(6);
       o.observables << wb, r.rotation.col(2);
@@ -224,25 +231,27 @@ void order_of(const engine_integrator& in, const scenario& s, const engine_optio
         r.change = (o.obs.segment(first, count) - previous->second.obs.segment(first, count)).norm() / s.scale;
       return r;
     };
-    return halving_study(run, s.steps0, opt.max_study_steps, eps,
-                         [&s](long n) { return s.t_end / static_cast<double>(n); });
+    order_study st = halving_study(run, s.steps0, opt.max_study_steps, in.epsilon,
+                                   [&s](long n) { return s.t_end / static_cast<double>(n); });
+    end_fit_at_rounding_rise(st, in.epsilon);
+    return st;
   };
   a.global = study(0, static_cast<int>(exact.size()));
   for (const auto& c : s.classes) a.classes.emplace_back(c.name, study(c.first, c.count));
 }
 
 /// The rounding budget of an engine's relative invariant after n steps of unknown
-/// arithmetic: 64 eps a step as a random walk.
-double engine_rounding_budget(double n) { return 64 * eps * std::sqrt(std::max(n, 1.0)); }
+/// arithmetic in a precision of machine epsilon u: 64 u a step as a random walk.
+double engine_rounding_budget(double u, double n) { return 64 * u * std::sqrt(std::max(n, 1.0)); }
 
 /// The growth class of a long run's relative error (classify_growth) with the scenario's
 /// time scale and the engine's rounding budget as the floor of each window.
-growth_class growth_of(const growth_recorder& g, const scenario& s, long long steps) {
+growth_class growth_of(const growth_recorder& g, const scenario& s, long long steps, double u) {
   const std::vector<double> steps_w = g.window_steps();
   std::vector<double> time(steps_w.size()), floor(steps_w.size());
   for (std::size_t w = 0; w < steps_w.size(); ++w) {
     time[w] = steps_w[w] * s.h_long;
-    floor[w] = engine_rounding_budget(steps_w[w]);
+    floor[w] = engine_rounding_budget(u, steps_w[w]);
   }
   return classify_growth(time, g.window_rms(), floor, s.time_scale, static_cast<double>(steps) * s.h_long);
 }
@@ -304,14 +313,14 @@ void run_long(const engine_integrator& in, const scenario& s, const engine_optio
     a.seconds_per_step = third[1];
   }
   if (s.conserves_energy) {
-    const growth_class c = growth_of(energy, s, a.long_run_steps);
+    const growth_class c = growth_of(energy, s, a.long_run_steps, in.epsilon);
     a.energy_growth = c.exponent;
     a.energy_class = c.kind;
     a.energy_max = energy.max_error();
     a.energy_history = history(energy, s.h_long);
   }
   if (momentum_kept) {
-    const growth_class c = growth_of(momentum, s, a.long_run_steps);
+    const growth_class c = growth_of(momentum, s, a.long_run_steps, in.epsilon);
     a.momentum_growth = c.exponent;
     a.momentum_class = c.kind;
     a.momentum_max = momentum.max_error();
@@ -336,7 +345,7 @@ void jacobian_of(const engine_integrator& in, const scenario& s, engine_scenario
   dynamic_vector<double> z(2);
   z << std::atan2(s.rotation0(0, 2), s.rotation0(0, 0)), s.omega0(1);
   try {
-    const fd_jacobian<double> j = finite_difference_jacobian<double>(map, z, 64);
+    const fd_jacobian<double> j = finite_difference_jacobian<double>(map, z, 64 * (in.epsilon / eps));
     const Eigen::Matrix2d m = j.value, err = j.error;
     a.det_minus_one = m.determinant() - 1;
     a.det_resolution = determinant_resolution(m, err);
@@ -443,7 +452,7 @@ namespace {
 /// The long run's energy error as a drift of the stepper audit (verdicts.hpp judges it):
 /// preserved within the rounding of an engine step of unknown arithmetic, 64 eps a step as
 /// a random walk (64 eps sqrt(N)); lost at an error of order one; else its growth class.
-std::optional<long_run> energy_run(const scenario& s, const engine_scenario_audit& a) {
+std::optional<long_run> energy_run(const scenario& s, const engine_scenario_audit& a, double u) {
   if (!s.conserves_energy || (a.long_run_steps == 0 && a.long_run_failure.empty())) return std::nullopt;
   long_run run;
   run.steps = a.long_run_steps;
@@ -452,7 +461,7 @@ std::optional<long_run> energy_run(const scenario& s, const engine_scenario_audi
   drift d;
   d.name = "energy";
   d.max_relative = a.energy_max;
-  d.budget_relative = engine_rounding_budget(static_cast<double>(a.long_run_steps));
+  d.budget_relative = engine_rounding_budget(u, static_cast<double>(a.long_run_steps));
   d.preserved = a.long_run_failure.empty() && d.max_relative <= d.budget_relative;
   d.exponent = a.energy_growth;
   d.kind = d.preserved ? "preserved to rounding"
@@ -468,7 +477,7 @@ engine_audit audit_engine(const engine_integrator& in, const engine_options& opt
   if (in.name.empty() || !in.start) throw domain_error("audit_engine: the integrator needs a name and a start function");
   // A name that matches no scenario would audit nothing: refuse it with the valid names.
   std::vector<scenario> all = scenarios();
-  all.insert(all.end(), opt.robots.begin(), opt.robots.end());
+  all.insert(all.end(), opt.drawn.begin(), opt.drawn.end());
   for (const auto& name : opt.scenarios)
     if (std::none_of(all.begin(), all.end(), [&](const scenario& s) { return s.name == name; })) {
       std::string known;
@@ -527,7 +536,7 @@ engine_audit audit_engine(const engine_integrator& in, const engine_options& opt
     problem_audit pe;
     pe.problem = s.name;
     pe.skipped = a.refused;
-    pe.run = a.refused.empty() ? energy_run(s, a) : std::nullopt;
+    pe.run = a.refused.empty() ? energy_run(s, a, in.epsilon) : std::nullopt;
     energy_problems.push_back(pe);
     out.scenarios.push_back(std::move(a));
   }
@@ -540,12 +549,12 @@ engine_audit audit_engine(const engine_integrator& in, const engine_options& opt
     for (const auto& p : problems)
       if (p.problem.size() > tag.size() && p.problem.compare(p.problem.size() - tag.size(), tag.size(), tag) == 0)
         of_class.push_back(p);
-    verdict v = judge_order(in.declared, of_class, eps);
+    verdict v = judge_order(in.declared, of_class, in.epsilon);
     v.claim = "order in the " + name;
     if (v.measured != "-") measured += (measured.empty() ? "" : ", ") + v.measured + " in the " + name;
     out.order_by_class.push_back(std::move(v));
   }
-  out.order = judge_order(in.declared, problems, eps);
+  out.order = judge_order(in.declared, problems, in.epsilon);
   if (!measured.empty()) out.order.measured = measured;
   out.symplectic = judge_symplectic(in, out.scenarios);
   out.energy = judge_energy(in.declared, energy_problems);

@@ -142,6 +142,9 @@ struct engine_integrator {
   /// prismatic joints from a robots::robot, read back in its joint coordinates); without it
   /// they are refused before start is called.
   bool robots = false;
+  /// The machine epsilon of the arithmetic the engine computes in (2^-23 for a single-
+  /// precision build): the studies' rounding floors and budgets are set from it.
+  double epsilon = 0x1p-52;
 };
 
 /// The audit of one integrator on one scenario.
@@ -222,10 +225,11 @@ struct engine_audit {
 
 struct engine_options {
   std::vector<std::string> scenarios;  ///< names; empty: all
-  /// Robot scenarios audited after the hand-built ones (random_robot_scenarios,
-  /// robot_scenario). Pass the same objects to every integrator: each certifies its
-  /// reference once, when first asked.
-  std::vector<scenario> robots;
+  /// Scenarios audited after the hand-built ones: drawn or given robots and free bodies
+  /// (random_robot_scenarios, robot_scenario, random_body_scenarios, free_body_scenario).
+  /// Pass the same objects to every integrator: a robot certifies its reference once, when
+  /// first asked.
+  std::vector<scenario> drawn;
   long long long_run_steps = 100000;
   long max_study_steps = 1 << 14;  // h = t_end / 16384: ten halvings from the coarsest run
   /// Time the long run's steps (seconds_per_step, the work-precision plot): not

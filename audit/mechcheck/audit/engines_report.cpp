@@ -42,6 +42,7 @@ std::string fit_text(const engine_scenario_audit& a) {
          (study.fit.used ? detail::fixed(study.fit.value) + (decisive(study.fit) ? "" : settled(study.fit) ? "*" : "?")
                          : "-");
     if (study.stalled) t += " (stalls at " + sci(study.stalled->error) + ")";
+    if (study.rounding_rise_h) t += " (rounding from h = " + sci(*study.rounding_rise_h) + ")";
   }
   return t.empty() ? "-" : t;
 }
@@ -106,6 +107,7 @@ std::string engines_to_json(const std::vector<engine_audit>& audits, const std::
       j["points"].push_back({{"h", p.h}, {"error", std::isfinite(p.error) ? json(p.error) : json(sci(p.error))}});
     j["fit"] = {{"value", st.fit.value}, {"spread", st.fit.spread}, {"used", st.fit.used}};
     if (st.stalled) j["stall"] = {{"error", st.stalled->error}, {"h", st.stalled->h}};
+    if (st.rounding_rise_h) j["rounding_rise_h"] = *st.rounding_rise_h;
     if (!st.note.empty()) j["note"] = st.note;
     return j;
   };

@@ -184,6 +184,10 @@ struct order_study {
   /// The epsilon of the floors it was fitted with where a certified reference's
   /// uncertainty exceeded the tier's (0: the tier's).
   double reference_floor = 0;
+  /// An engine's study whose errors rose at every halving past their minimum, within its
+  /// arithmetic's rounding budget (end_fit_at_rounding_rise): the first h of the rise. The
+  /// fit ends before it.
+  std::optional<double> rounding_rise_h;
 };
 
 /// A defect that is zero for the claimed property: within its rounding budget, or

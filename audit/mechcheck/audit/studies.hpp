@@ -199,6 +199,36 @@ order_study halving_study(Run&& run, long n0, long max_steps, double eps,
   return study;
 }
 
+/// An engine's rounding in its own arithmetic (machine epsilon u) accumulates with its
+/// steps, and where u is far above double's (a single-precision build) it can overtake the
+/// truncation error inside a halving study: the errors fall to a minimum, then rise at every
+/// halving. No consistent method's truncation error rises as h falls in its asymptotic
+/// range, so the rising points measure rounding when they stay within the budget of a
+/// rounding per step all biased alike, 16 u n (relative to the scale). The rounding a step
+/// is then measured, c = e / n at the finest run, and the fit takes the runs before the
+/// minimum whose errors are floor_margin times c n (rounding then moves an exponent by
+/// less than 0.03); rounding_rise_h says where the rise began. A rise beyond that budget, or
+/// one that does not rise at every halving, is left to the fit as it is.
+inline void end_fit_at_rounding_rise(order_study& study, double u) {
+  const std::vector<study_point>& points = study.points;
+  if (points.size() < 3) return;
+  std::size_t low = 0;
+  for (std::size_t i = 1; i < points.size(); ++i)
+    if (points[i].error < points[low].error) low = i;
+  if (low + 1 >= points.size()) return;
+  for (std::size_t i = low + 1; i < points.size(); ++i)
+    if (!(points[i].error > points[i - 1].error)) return;
+  if (!(points.back().error <= 16 * u * std::max(points.back().evaluations, 1.0))) return;
+  const double per_step = points.back().error / std::max(points.back().evaluations, 1.0);
+  std::vector<study_point> kept;
+  for (std::size_t i = 0; i <= low && points[i].error >= floor_margin * per_step * points[i].evaluations; ++i)
+    kept.push_back(points[i]);
+  double resolvable = 0;
+  for (const auto& p : kept) resolvable = std::max(resolvable, floor_margin * rounding_floor(u, p.evaluations));
+  study.fit = fit_halvings(convergent_points(kept), resolvable);
+  study.rounding_rise_h = points[low + 1].h;
+}
+
 /// Least-squares slope of log y against log x over the indices given (nothing below two).
 inline std::optional<double> log_log_slope(const std::vector<double>& x, const std::vector<double>& y,
                                            const std::vector<std::size_t>& use) {

@@ -216,7 +216,7 @@ await serveEngine(
   {
     name: 'jolt',
     origin:
-      `Jolt Physics ${version} (npm jolt-physics, WebAssembly, float) in Node ${process.version}: ` +
+      `Jolt Physics ${version} (npm jolt-physics, WebAssembly) in Node ${process.version}: ` +
       'JoltInterface.Step(h, 1), one collision step of PhysicsSystem.Update; its documentation declares no order',
     integrators,
   },

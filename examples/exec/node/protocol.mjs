@@ -39,8 +39,33 @@ export function scenarioOf(s) {
   return out;
 }
 
+/** The precision an engine keeps a body's state in, measured: a free body started at
+ * x = 1 + 2^-30 (a double, not a float) and read back at once. 'double' when x comes back,
+ * 'single' when float's rounding of it (1) does; the handshake's "precision", from which the
+ * audit sets its rounding floors. */
+export function precisionOf(start, integrator) {
+  const x = 1 + 2 ** -30;
+  const zero = [0, 0, 0];
+  const run = start(integrator, {
+    name: 'precision', structure: 'one_body', joint: 'free', mass: 1, inertia: [1, 2, 3], com: zero,
+    rotation0: [1, 0, 0, 0, 1, 0, 0, 0, 1], position0: [x, 0, 0], velocity0: zero, omega0: zero, gravity: 0, central: 0,
+  });
+  try {
+    const y = run.reading().frame[9];
+    const said = `a free body started at x = 1 + 2^-30 reads back x = ${y === 1 ? '1' : y === x ? '1 + 2^-30' : y}`;
+    if (y === x) return { precision: 'double', said: `${said}: double precision` };
+    if (y === Math.fround(x)) return { precision: 'single', said: `${said}: single precision (float)` };
+    throw new Error(`${said}: neither double nor single precision`);
+  } finally {
+    run.free?.();
+  }
+}
+
 export async function serveEngine(hello, start, moments) {
-  send({ protocol: 'mechcheck', version: 1, kind: 'engine', numbers: 'decimal', shapes: !!moments, ...hello });
+  // The precision measured before the handshake, said in the origin.
+  const { precision, said } = precisionOf(start, hello.integrators[0].name);
+  send({ protocol: 'mechcheck', version: 1, kind: 'engine', numbers: 'decimal', shapes: !!moments, precision, ...hello,
+    origin: `${hello.origin}; ${said}` });
   const runs = new Map();
   const lines = readline.createInterface({ input: process.stdin, crlfDelay: Infinity });
   for await (const line of lines) {

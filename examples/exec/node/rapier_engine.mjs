@@ -161,7 +161,7 @@ await serveEngine(
   {
     name: 'rapier',
     origin:
-      `Rapier ${version} (npm @dimforge/rapier3d-compat, WebAssembly, f32) in Node ${process.version}: World.step(), ` +
+      `Rapier ${version} (npm @dimforge/rapier3d-compat, WebAssembly) in Node ${process.version}: World.step(), ` +
       'one step of World.timestep; its documentation declares no order ("The timestep length", ' +
       'IntegrationParameters.dt)',
     integrators,

@@ -138,6 +138,9 @@ struct handshake_fields {
   method_structure structure;
   bool decimal = false;  ///< "numbers": "decimal": the parent writes 17 significant digits
   bool shapes = false;   ///< an engine that answers "shape" requests
+  /// An engine's "precision": the machine epsilon of the arithmetic it computes in
+  /// ("double": 2^-52, the default; "single": 2^-23).
+  double epsilon = 0x1p-52;
   std::vector<integrator_fields> integrators;  ///< kind "engine"
   std::vector<dynamics_quantity> quantities;   ///< kind "dynamics": those it computes
 };

@@ -361,6 +361,7 @@ exec_engine_target exec_engine(const std::vector<std::string>& command, const ex
     e.name = "exec::" + h.name + "::" + i.name;
     e.origin = served_by((h.origin.empty() ? "" : h.origin + "; ") + i.origin, command);
     e.declared = i.declared;
+    e.epsilon = h.epsilon;
     e.multibody = true;  // the child refuses what it cannot build
     const std::string name = i.name;
     e.start = [s, name](const scenario& sc) -> std::unique_ptr<engine_run> {

@@ -35,6 +35,7 @@ enum class scenario_kind {
   four_bar,            ///< a chain of three bars closed on the ground (a loop)
   three_body,          ///< three free bodies under their mutual gravitation
   robot,               ///< a robot (robots/robot.hpp), given or drawn: its joint coordinates and rates
+  free_body,           ///< a free asymmetric body, given or drawn, its principal axes anywhere
 };
 
 /// How a scenario's bodies are put together.
@@ -158,6 +159,29 @@ scenario robot_scenario(std::string name, const robots::robot& r, const Eigen::V
 /// in [-pi, pi], slides in [-1, 1], rates in [-2, 2]); the same seed gives the same robots.
 /// A drawn robot without a moving joint gets its first joint revolute.
 std::vector<scenario> random_robot_scenarios(int count, std::uint64_t seed, int max_links = 3);
+
+/// A free body of mass `mass` and principal moments I1 < I2 < I3 < I1 + I2 (`inertia`)
+/// along the columns of rotation0 (its principal axes in the world), its centre of mass at
+/// position0 moving at velocity0, turning at omega0 (world frame), no gravity. Observed as
+/// the body angular velocity R^T omega (against the Jacobi elliptic solution of Euler's
+/// equations, reference::asymmetric_top_angular_velocity, in mpfr50 from R0^T omega0), the
+/// direction of the fixed angular momentum in the body, R^T M / |M| = I Omega / |M| (the
+/// orientation but for the turn about M), and the centre of mass's uniform motion. Energy
+/// and angular momentum (about the origin) are conserved; the time scale is the period of
+/// Omega. Throws domain_error for moments not strictly rising or breaking the triangle
+/// inequality, a rotation0 that is not one (to 16 eps), a body that does not turn or one on
+/// the separatrix (M^2 = 2 E I2); non_finite_error for a number that is not finite.
+scenario free_body_scenario(std::string name, double mass, const Eigen::Vector3d& inertia,
+                            const Eigen::Matrix3d& rotation0, const Eigen::Vector3d& position0,
+                            const Eigen::Vector3d& velocity0, const Eigen::Vector3d& omega0, double t_end = 4);
+
+/// `count` random free bodies as scenarios named body_<seed>_<k>: masses in [1/4, 4],
+/// moments I1 in [1/4, 2] with both gaps at least I1 / 16 and I3 < I1 + I2, the principal
+/// axes turned by roll, pitch and yaw in [-3.14, 3.14], a body angular velocity in [-2, 2]^3
+/// about no principal axis (two components at least, |Omega| >= 1/4, |M^2 - 2 E I2| >=
+/// M^2 / 8), the centre of mass in [-1, 1]^3 moving at up to 1 a component; every number
+/// dyadic. The same seed gives the same bodies, body k the same whatever the count.
+std::vector<scenario> random_body_scenarios(int count, std::uint64_t seed);
 
 /// A hinge scenario (pendulum) started at angle theta and rate thetadot instead of its own
 /// initial state: the map of one step in (theta, thetadot) for the Jacobian study.

@@ -194,7 +194,7 @@ exec_protocol::handshake_fields handshake_of(const json& h, std::string_view kin
                      std::string(kind) + "\"");
   if (kind == "engine")
     only_known_fields(h, {"protocol", "version", "kind", "name", "origin", "claims", "structure", "numbers", "shapes",
-                          "integrators"},
+                          "precision", "integrators"},
                       what);
   else if (kind == "dynamics")
     only_known_fields(h, {"protocol", "version", "kind", "name", "origin", "numbers", "quantities"}, what);
@@ -221,6 +221,11 @@ exec_protocol::handshake_fields handshake_of(const json& h, std::string_view kin
   if (const auto it = h.find("shapes"); it != h.end()) {
     if (!it->is_boolean()) throw exec_error(what + ": \"shapes\" must be true or false");
     out.shapes = it->get<bool>();
+  }
+  if (const auto it = h.find("precision"); it != h.end()) {
+    if (*it != "double" && *it != "single")
+      throw exec_error(what + ": \"precision\" must be \"double\" or \"single\", got " + excerpt_json(*it));
+    out.epsilon = *it == "single" ? 0x1p-23 : 0x1p-52;
   }
   if (kind == "engine") {
     const auto it = h.find("integrators");
