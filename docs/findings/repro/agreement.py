@@ -115,8 +115,8 @@ def largest_axis_error(program, shape):
 # MuJoCo's compiled inertia: the same mass matrix, the audit's difference of two exact ones
 # (each rounded once to double) against the reproducer's double difference: 1e-6 relative of
 # a 2.5e-8 difference is 1e-14, a hundred ulps of M. Errors and ratios of identical setups: the same arithmetic up to summation order, 1e-3
-# relative (cannon-es's free top, read through the same quaternion and a reference good to
-# 1e-13 against the audit's Jacobi elliptic one: 1e-6); the stall of CASH: 5 % (the audit's runs go to 2^16 steps, the reproducer's to
+# relative (cannon-es's and Havok's free top, read through the same quaternion and a reference
+# good to 1e-13 against the audit's Jacobi elliptic one: 1e-6); the stall of CASH: 5 % (the audit's runs go to 2^16 steps, the reproducer's to
 # 2^14, both on the plateau at 4.9e-11).
 CHECKS = [
     ("mujoco-fullinertia", "MuJoCo 2.2.2: the mass matrix of the compiled one-link robot against I_zz",
@@ -147,6 +147,14 @@ CHECKS = [
     ("cannon-free-body", "a sphere's moment of inertia: relative error",
      lambda: repro("cannon_free_body", "sphere_over_exact") - 1,
      lambda: shape_error("exec::cannon_es", "sphere", "engines-cannon/engines.json"), 1e-5, True),
+    ("havok-free-body", "Havok 1.3.14: the free top's angular momentum, largest relative change over 10^4 steps",
+     lambda: repro("havok_free_body", "free_top_momentum_max"),
+     lambda: engine_scenario("exec::havok::step", "free_top", "engines-havok/engines.json")["momentum_max"],
+     1e-6, True),
+    ("havok-free-body", "Havok 1.3.14: the free top's body angular velocity error at t = 5, 512 steps",
+     lambda: repro("havok_free_body", "free_top_error_n512"),
+     lambda: class_error("exec::havok::step", "free_top", "angular velocity", 5 / 512,
+                         "engines-havok/engines.json"), 1e-6, True),
     ("simbody-feldberg", "RungeKuttaFeldberg's global order (pendulum)",
      lambda: repro("simbody_orders", "RungeKuttaFeldberg_global_order"),
      lambda: class_fit("simbody::RungeKuttaFeldberg", "pendulum_small", "joint coordinates"), 0.05, False),

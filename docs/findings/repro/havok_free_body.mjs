@@ -1,0 +1,120 @@
+// havok_free_body.mjs -- torque-free rigid body in Havok (@babylonjs/havok), checked against Euler's equations.
+// A body with principal moments I = (1, 2, 3), mass 1, no gravity, zero damping, ALWAYS_ACTIVE, identity
+// orientation, angular velocity (1, 0.2, 0.5) rad/s (Havok's angular velocity is world-frame), is stepped
+// with HP_World_Step. Printed: world angular momentum drift L = R diag(I) R^T w over 1e4 steps of 0.01,
+// world angular velocity drift, body angular velocity error at t = 5 after 512 steps vs an RK4 reference,
+// and an impulse check of whether the inertia argument of HP_Body_SetMassProperties is scaled by mass.
+// Run: node havok_free_body.mjs PATH/TO/node_modules/@babylonjs/havok
+// Output: lines "name value". Uses only Havok and plain JavaScript.
+import { readFileSync } from 'fs';
+const dir = process.argv[2];
+if (!dir) { console.error('usage: node havok_free_body.mjs PATH/TO/node_modules/@babylonjs/havok'); process.exit(1); }
+const pkg = JSON.parse(readFileSync(dir + '/package.json', 'utf8'));
+const HavokPhysics = (await import(dir + '/lib/esm/HavokPhysics_es.js')).default;
+const H = await HavokPhysics({ wasmBinary: readFileSync(dir + '/lib/esm/HavokPhysics.wasm') });
+const OK = H.Result.RESULT_OK;
+const ck = (r) => { const res = Array.isArray(r) ? r[0] : r; if (res !== OK) throw new Error('Havok call failed'); return Array.isArray(r) ? r[1] : r; };
+
+const I = [1, 2, 3], W0 = [1, 0.2, 0.5];
+const norm = (v) => Math.hypot(v[0], v[1], v[2]);
+const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+function rotOf([x, y, z, w]) { // rotation matrix (rows) of unit quaternion [x, y, z, w]
+  return [[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+          [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+          [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]];
+}
+const mul = (R, v) => R.map((r) => r[0] * v[0] + r[1] * v[1] + r[2] * v[2]);
+const mulT = (R, v) => [0, 1, 2].map((j) => R[0][j] * v[0] + R[1][j] * v[1] + R[2][j] * v[2]);
+
+// One world per body, so bodies never touch each other.
+// Its ideal step time set to the step taken (the default is 1/60 s), as the audit's client does.
+function makeFreeBody(mass, inertia, omega, q = [0, 0, 0, 1], h = 0.01) {
+  const world = ck(H.HP_World_Create());
+  ck(H.HP_World_SetIdealStepTime(world, h));
+  ck(H.HP_World_SetGravity(world, [0, 0, 0]));
+  const body = ck(H.HP_Body_Create());
+  ck(H.HP_Body_SetShape(body, ck(H.HP_Shape_CreateSphere([0, 0, 0], 0.1))));
+  ck(H.HP_Body_SetMotionType(body, H.MotionType.DYNAMIC));
+  ck(H.HP_Body_SetMassProperties(body, [[0, 0, 0], mass, inertia, [0, 0, 0, 1]]));
+  ck(H.HP_Body_SetLinearDamping(body, 0));
+  ck(H.HP_Body_SetAngularDamping(body, 0)); // default is 0.1
+  ck(H.HP_Body_SetQTransform(body, [[0, 0, 0], q]));
+  ck(H.HP_World_AddBody(world, body, false));
+  ck(H.HP_Body_SetActivationControl(body, H.ActivationControl.ALWAYS_ACTIVE));
+  ck(H.HP_Body_SetLinearVelocity(body, [0, 0, 0]));
+  ck(H.HP_Body_SetAngularVelocity(body, omega));
+  return { world, body };
+}
+const state = (body) => {
+  const R = rotOf(ck(H.HP_Body_GetQTransform(body))[1]);
+  const w = ck(H.HP_Body_GetAngularVelocity(body)); // world frame
+  const Wb = mulT(R, w); // body frame
+  return { w, Wb, L: mul(R, Wb.map((x, i) => I[i] * x)) };
+};
+
+console.log('havok_version', pkg.version);
+
+// Run 1: 1e4 steps of h = 0.01 (t = 0.01 .. 100).
+{
+  const { world, body } = makeFreeBody(1, I, W0);
+  const mp = ck(H.HP_Body_GetMassProperties(body));
+  console.log('mass_readback', mp[1]);
+  console.log('inertia_readback', mp[2].join(','));
+  console.log('inertia_orientation_readback', mp[3].join(','));
+  console.log('angular_damping_readback', ck(H.HP_Body_GetAngularDamping(body)));
+  const s0 = state(body);
+  let dL = 0, dw = 0;
+  for (let n = 1; n <= 10000; n++) {
+    ck(H.HP_World_Step(world, 0.01));
+    const s = state(body);
+    dL = Math.max(dL, norm(sub(s.L, s0.L)) / norm(s0.L));
+    dw = Math.max(dw, norm(sub(s.w, s0.w)) / norm(s0.w));
+  }
+  console.log('free_top_momentum_max', dL.toExponential(6));
+  console.log('free_top_world_omega_change_max', dw.toExponential(6));
+  console.log('free_top_omega_body_t100', state(body).Wb.map((x) => x.toFixed(6)).join(','));
+}
+
+// Reference: classical RK4 on Euler's equations I W' = (I W) x W, body frame.
+function eulerRK4(W, T, n) {
+  const h = T / n;
+  const f = ([a, b, c]) => [(I[1] - I[2]) * b * c / I[0], (I[2] - I[0]) * c * a / I[1], (I[0] - I[1]) * a * b / I[2]];
+  const ax = (u, k, s) => u.map((x, i) => x + s * k[i]);
+  for (let i = 0; i < n; i++) {
+    const k1 = f(W), k2 = f(ax(W, k1, h / 2)), k3 = f(ax(W, k2, h / 2)), k4 = f(ax(W, k3, h));
+    W = W.map((x, j) => x + (h / 6) * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]));
+  }
+  return W;
+}
+
+// Run 2: 512 steps of 5/512, body angular velocity at t = 5 vs reference.
+{
+  const exact = eulerRK4(W0, 5, 50000), check = eulerRK4(W0, 5, 25000);
+  console.log('reference_h1e-4_vs_h2e-4', (norm(sub(exact, check)) / norm(W0)).toExponential(6));
+  console.log('reference_omega_body_t5', exact.map((x) => x.toFixed(6)).join(','));
+  const { world, body } = makeFreeBody(1, I, W0, [0, 0, 0, 1], 5 / 512);
+  for (let n = 0; n < 512; n++) ck(H.HP_World_Step(world, 5 / 512));
+  const Wb = state(body).Wb;
+  console.log('havok_omega_body_t5', Wb.map((x) => x.toFixed(6)).join(','));
+  console.log('free_top_error_n512', (norm(sub(Wb, exact)) / norm(W0)).toExponential(6));
+}
+
+// Inertia-argument check: mass 2, inertia argument (1,2,3), body at rest, angular impulse (1,1,1).
+// dw_i * I_i = 1 if the argument is the inertia itself, = 1/mass = 0.5 if it is inertia per unit mass.
+{
+  const { body } = makeFreeBody(2, I, [0, 0, 0]);
+  ck(H.HP_Body_ApplyAngularImpulse(body, [1, 1, 1]));
+  const w = ck(H.HP_Body_GetAngularVelocity(body));
+  console.log('mass2_impulse_dw_times_inertia_arg', w.map((x, i) => (x * I[i]).toFixed(6)).join(','));
+}
+
+// Frame check: orientation 90 deg about z, angular velocity (1,0,0), one step of 0.01. The rotation
+// q1 * conj(q0) has axis (1,0,0) if the velocity is world-frame, (0,-1,0) if it were body-frame.
+{
+  const c = Math.SQRT1_2, { world, body } = makeFreeBody(1, I, [1, 0, 0], [0, 0, c, c]);
+  const q0 = ck(H.HP_Body_GetQTransform(body))[1];
+  ck(H.HP_World_Step(world, 0.01));
+  const [x, y, z, w] = ck(H.HP_Body_GetQTransform(body))[1], [a, b, d, e] = [-q0[0], -q0[1], -q0[2], q0[3]];
+  const v = [w * a + x * e + y * d - z * b, w * b - x * d + y * e + z * a, w * d + x * b - y * a + z * e];
+  console.log('frame_check_step_axis', v.map((t) => (t / norm(v)).toFixed(6)).join(','));
+}
