@@ -115,7 +115,7 @@ def largest_axis_error(program, shape):
 # MuJoCo's compiled inertia: the same mass matrix, the audit's difference of two exact ones
 # (each rounded once to double) against the reproducer's double difference: 1e-6 relative of
 # a 2.5e-8 difference is 1e-14, a hundred ulps of M. Errors and ratios of identical setups: the same arithmetic up to summation order, 1e-3
-# relative (cannon-es's and Havok's free top, read through the same quaternion and a reference
+# relative (cannon-es's, Havok's and Jolt's free top, read through the same quaternion and a reference
 # good to 1e-13 against the audit's Jacobi elliptic one: 1e-6); the stall of CASH: 5 % (the audit's runs go to 2^16 steps, the reproducer's to
 # 2^14, both on the plateau at 4.9e-11).
 CHECKS = [
@@ -155,6 +155,18 @@ CHECKS = [
      lambda: repro("havok_free_body", "free_top_error_n512"),
      lambda: class_error("exec::havok::step", "free_top", "angular velocity", 5 / 512,
                          "engines-havok/engines.json"), 1e-6, True),
+    ("jolt-gyroscopic", "Jolt 1.1.0, gyroscopic force on: the free top's energy, largest relative change over 10^4 steps",
+     lambda: repro("jolt_gyroscopic", "gyroscopic_energy_max"),
+     lambda: engine_scenario("exec::jolt::gyroscopic", "free_top", "engines-jolt/engines.json")["energy_max"],
+     1e-6, True),
+    ("jolt-gyroscopic", "Jolt 1.1.0, gyroscopic force on: the free top's angular momentum, largest relative change",
+     lambda: repro("jolt_gyroscopic", "gyroscopic_momentum_max"),
+     lambda: engine_scenario("exec::jolt::gyroscopic", "free_top", "engines-jolt/engines.json")["momentum_max"],
+     1e-6, True),
+    ("jolt-gyroscopic", "Jolt 1.1.0, its default: the free top's angular momentum, largest relative change",
+     lambda: repro("jolt_gyroscopic", "default_momentum_max"),
+     lambda: engine_scenario("exec::jolt::default", "free_top", "engines-jolt/engines.json")["momentum_max"],
+     1e-6, True),
     ("simbody-feldberg", "RungeKuttaFeldberg's global order (pendulum)",
      lambda: repro("simbody_orders", "RungeKuttaFeldberg_global_order"),
      lambda: class_fit("simbody::RungeKuttaFeldberg", "pendulum_small", "joint coordinates"), 0.05, False),
