@@ -115,7 +115,7 @@ def largest_axis_error(program, shape):
 # MuJoCo's compiled inertia: the same mass matrix, the audit's difference of two exact ones
 # (each rounded once to double) against the reproducer's double difference: 1e-6 relative of
 # a 2.5e-8 difference is 1e-14, a hundred ulps of M. Errors and ratios of identical setups: the same arithmetic up to summation order, 1e-3
-# relative (cannon-es's, Havok's and Jolt's free top, read through the same quaternion and a reference
+# relative (cannon-es's, Havok's, Jolt's and Rapier's free top, read through the same quaternion and a reference
 # good to 1e-13 against the audit's Jacobi elliptic one: 1e-6); the stall of CASH: 5 % (the audit's runs go to 2^16 steps, the reproducer's to
 # 2^14, both on the plateau at 4.9e-11).
 CHECKS = [
@@ -166,6 +166,18 @@ CHECKS = [
     ("jolt-gyroscopic", "Jolt 1.1.0, its default: the free top's angular momentum, largest relative change",
      lambda: repro("jolt_gyroscopic", "default_momentum_max"),
      lambda: engine_scenario("exec::jolt::default", "free_top", "engines-jolt/engines.json")["momentum_max"],
+     1e-6, True),
+    ("rapier-free-body", "Rapier 0.21.0: the free top's body angular velocity error at t = 5, 512 steps (truncation)",
+     lambda: repro("rapier_free_body", "free_top_error_n512"),
+     lambda: class_error("exec::rapier::impulse_joints", "free_top", "angular velocity", 5 / 512,
+                         "engines-rapier/engines.json"), 1e-6, True),
+    ("rapier-free-body", "Rapier 0.21.0: the same at 16384 steps (its rounding)",
+     lambda: repro("rapier_free_body", "free_top_error_n16384"),
+     lambda: class_error("exec::rapier::impulse_joints", "free_top", "angular velocity", 5 / 16384,
+                         "engines-rapier/engines.json"), 1e-6, True),
+    ("rapier-free-body", "Rapier 0.21.0: the free top's energy, largest relative change over 10^4 steps",
+     lambda: repro("rapier_free_body", "free_top_energy_max_1e4"),
+     lambda: engine_scenario("exec::rapier::impulse_joints", "free_top", "engines-rapier/engines.json")["energy_max"],
      1e-6, True),
     ("simbody-feldberg", "RungeKuttaFeldberg's global order (pendulum)",
      lambda: repro("simbody_orders", "RungeKuttaFeldberg_global_order"),
