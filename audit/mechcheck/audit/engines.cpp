@@ -450,8 +450,8 @@ verdict judge_symplectic(const engine_integrator& in, const std::vector<engine_s
 
 namespace {
 /// The long run's energy error as a drift of the stepper audit (verdicts.hpp judges it):
-/// preserved within the rounding of an engine step of unknown arithmetic, 64 eps a step as
-/// a random walk (64 eps sqrt(N)); lost at an error of order one; else its growth class.
+/// preserved within the rounding of an engine step in a precision of machine epsilon u, 64 u
+/// a step as a random walk (64 u sqrt(N)); lost at an error of order one; else its growth class.
 std::optional<long_run> energy_run(const scenario& s, const engine_scenario_audit& a, double u) {
   if (!s.conserves_energy || (a.long_run_steps == 0 && a.long_run_failure.empty())) return std::nullopt;
   long_run run;

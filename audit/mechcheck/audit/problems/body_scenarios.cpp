@@ -3,6 +3,7 @@
 // elliptic solution of Euler's equations; and random bodies drawn as scenarios.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Geometry>
 
@@ -27,9 +28,12 @@ scenario free_body_scenario(std::string name, double mass, const Eigen::Vector3d
                             const Eigen::Matrix3d& rotation0, const Eigen::Vector3d& position0,
                             const Eigen::Vector3d& velocity0, const Eigen::Vector3d& omega0, double t_end) {
   const std::string where = "free_body_scenario " + name + ": ";
-  if (!std::isfinite(mass) || !inertia.allFinite() || !rotation0.allFinite() || !position0.allFinite() ||
-      !velocity0.allFinite() || !omega0.allFinite() || !std::isfinite(t_end))
-    throw non_finite_error(where + "a number that is not finite");
+  if (!std::isfinite(mass) || !std::isfinite(t_end))
+    throw non_finite_error(where + "mass = " + to_text(mass) + ", t_end = " + to_text(t_end));
+  for (const auto& [field, value] : {std::pair{"inertia", inertia}, std::pair{"position0", position0},
+                                     std::pair{"velocity0", velocity0}, std::pair{"omega0", omega0}})
+    if (!value.allFinite()) throw non_finite_error(where + field + " = " + to_text(value));
+  if (!rotation0.allFinite()) throw non_finite_error(where + "rotation0 has a number that is not finite");
   if (!(mass > 0)) throw domain_error(where + "the mass must be positive, got " + to_text(mass));
   if (!(inertia(0) > 0 && inertia(0) < inertia(1) && inertia(1) < inertia(2)))
     throw domain_error(where + "need 0 < I1 < I2 < I3 (an asymmetric body; turn its axes with rotation0), got " +
