@@ -97,6 +97,13 @@ audit::problem_audit at_floor(audit::problem_audit p) {
   return p;
 }
 
+/// A problem whose global study ran (two runs) and resolved no halving above its floor.
+audit::problem_audit ran_unresolved() {
+  audit::problem_audit p = problem_with(std::nullopt, std::nullopt);
+  p.global.points = {{0.1, 1e-17}, {0.05, 2e-17}};
+  return p;
+}
+
 class verdict_table : public ::testing::TestWithParam<order_row> {};
 
 TEST_P(verdict_table, order) {
@@ -155,6 +162,10 @@ const order_row order_rows[] = {
     // Nothing declared, nothing resolvable.
     {"not_declared", std::nullopt, {problem_with(fit{4.0, 0.0, 3}, fit{5.0, 0, 3})}, outcome::not_declared, "4.00"},
     {"nothing_resolved", 4, {problem_with(std::nullopt, std::nullopt)}, outcome::not_measured, "-"},
+    // Runs that ran and resolved nothing: the study cannot decide a declared order; nothing
+    // declared reads not declared whatever was measured.
+    {"ran_but_nothing_resolved", 4, {ran_unresolved()}, outcome::not_resolvable, "-"},
+    {"nothing_declared_nothing_resolved", std::nullopt, {problem_with(std::nullopt, std::nullopt)}, outcome::not_declared, "-"},
     {"only_local", 4, {problem_with(std::nullopt, fit{5.0, 0.0, 3})}, outcome::not_resolvable, "-"},
     {"only_local_below", 4, {problem_with(std::nullopt, fit{4.0, 0.0, 3})}, outcome::contradicted, "-"},
 };
@@ -213,6 +224,7 @@ const property_row property_rows[] = {
     {"claimed_and_over_by_finite_differences", true, {false}, outcome::contradicted, 1e-8},
     {"not_declared", std::nullopt, {true}, outcome::not_declared},
     {"not_measured", true, {std::nullopt, std::nullopt}, outcome::not_measured},
+    {"nothing_declared_nothing_measured", std::nullopt, {std::nullopt}, outcome::not_declared},
     {"measured_on_one", true, {std::nullopt, true}, outcome::confirmed},
 };
 
@@ -340,6 +352,7 @@ TEST(audit_verdicts, a_declared_energy_behaviour_against_the_growth_class) {
   EXPECT_EQ(judge(drift, energy_run("bounded", 1e-6, 0.0)), outcome::exceeds);
   EXPECT_EQ(judge(std::nullopt, energy_run("bounded", 1e-6, 0.0)), outcome::not_declared);
   EXPECT_EQ(judge(bounded, audit::problem_audit{}), outcome::not_measured);
+  EXPECT_EQ(judge(std::nullopt, audit::problem_audit{}), outcome::not_declared);
 }
 
 TEST(audit_studies, runs_that_agree_exactly_while_the_error_stays_are_a_stall) {

@@ -498,6 +498,11 @@ TEST(engines, the_jacobian_study_has_known_answers) {
     EXPECT_NEAR(*sc.det_minus_one, std::expm1(-damping * s.h_long), sc.det_resolution) << sc.scenario;
   }
   EXPECT_EQ(d.symplectic.result, outcome::contradicted) << d.symplectic.evidence;
+  // Nothing declared: the defect is reported, the verdict says nothing was declared.
+  euler.declared.symplectic.reset();
+  const auto u = audit::audit_engine(euler, opt);
+  EXPECT_EQ(u.symplectic.result, outcome::not_declared) << u.symplectic.evidence;
+  EXPECT_EQ(u.symplectic.measured, "no (a defect above the resolution)");
 }
 
 TEST(engines, the_reversal_study_has_known_answers) {

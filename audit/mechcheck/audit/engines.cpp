@@ -426,8 +426,19 @@ verdict judge_symplectic(const engine_integrator& in, const std::vector<engine_s
   }
   v.evidence = evidence;
   if (!measured) {
-    v.measured = "not measured";
-    v.result = verdict::outcome::not_measured;
+    // Nothing declared: not declared. Declared, and a Jacobian ran on some scenario but none
+    // resolved to the resolution needed: not resolvable; no Jacobian at all: not measured.
+    const bool ran = std::any_of(all.begin(), all.end(), [](const engine_scenario_audit& a) { return a.det_minus_one.has_value(); });
+    v.measured = ran ? "not resolved" : "-";
+    v.result = !declared ? verdict::outcome::not_declared
+               : ran     ? verdict::outcome::not_resolvable
+                         : verdict::outcome::not_measured;
+    if (declared && ran) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "a Jacobian resolved to %.0e or better (its difference quotients settled)",
+                    det_resolution_needed);
+      v.needs = buf;
+    }
     return v;
   }
   v.measured = defect ? "no (a defect above the resolution)" : "no defect above the resolution";

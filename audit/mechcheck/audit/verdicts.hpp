@@ -204,17 +204,26 @@ inline verdict judge_order_as_fitted(const claims& c, const std::vector<problem_
   const order_assessment a = assess_order(ps, p, p + 1, true, c.order ? std::to_string(p) : "-");
   v.evidence = a.evidence;
   v.measured = least_text(a);
-  if (!a.any_fit) {
-    v.result = outcome::not_measured;
-    if (!a.unresolved_by_reference.empty()) {  // measured, and nothing resolvable in it
-      v.result = outcome::not_resolvable;
-      v.needs = "references certified to more digits (a shorter horizon): on " + a.unresolved_by_reference +
-                " the reference's uncertainty lies above the errors the runs reach";
-    }
-    return v;
-  }
+  // Nothing declared: the measurement is reported, whatever it resolved.
   if (!c.order) {
     v.result = outcome::not_declared;
+    return v;
+  }
+  if (!a.any_fit) {
+    // Runs that ran and resolved no halving say the study cannot decide; no run at all
+    // (every problem skipped or failed) is not measured.
+    const bool ran = std::any_of(ps.begin(), ps.end(), [](const problem_audit& pa) {
+      return pa.skipped.empty() && (!pa.global.points.empty() || !pa.local.points.empty());
+    });
+    v.result = ran || !a.unresolved_by_reference.empty() ? outcome::not_resolvable : outcome::not_measured;
+    if (!a.unresolved_by_reference.empty())
+      v.needs = "references certified to more digits (a shorter horizon): on " + a.unresolved_by_reference +
+                " the reference's uncertainty lies above the errors the runs reach";
+    else if (ran && !a.exact_problems.empty())
+      v.needs = "a problem whose error lies above rounding: " + a.exact_problems +
+                " integrated to rounding from the coarsest run on";
+    else if (ran)
+      v.needs = "errors above the floors: coarser runs, or a precision with a lower floor";
     return v;
   }
   const claim_reading primary{reading_name(order_reading::global, p), v.measured,
@@ -386,10 +395,10 @@ verdict judge_property(const char* name, const std::optional<bool>& claim,
   }
   v.measured = !any ? "-" : !all_within_given ? "no" : all_within ? (by_fd ? "yes" : "to rounding") : "to the precision given";
   v.evidence = evidence;
-  if (!any) {
-    v.result = outcome::not_measured;
-  } else if (!claim) {
+  if (!claim) {
     v.result = outcome::not_declared;
+  } else if (!any) {
+    v.result = outcome::not_measured;
   } else if (*claim) {
     v.result = all_within ? outcome::confirmed : all_within_given ? outcome::to_precision_given : outcome::contradicted;
   } else if (!all_within_given) {
@@ -462,10 +471,10 @@ inline verdict judge_energy(const claims& c, const std::vector<problem_audit>& p
   }
   v.measured = worst;
   v.evidence = evidence;
-  if (!any) {
-    v.result = outcome::not_measured;
-  } else if (!c.energy) {
+  if (!c.energy) {
     v.result = outcome::not_declared;
+  } else if (!any) {
+    v.result = outcome::not_measured;
   } else if (*c.energy == energy_behaviour::bounded) {
     v.result = bounded ? outcome::confirmed : drifts ? outcome::contradicted : outcome::not_resolvable;
   } else {
