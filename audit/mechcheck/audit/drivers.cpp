@@ -342,17 +342,15 @@ std::string horizon_cell(const driver_audit& a) {
 }  // namespace
 
 void print_drivers(std::ostream& out, const std::vector<driver_audit>& audits) {
-  char line[320];
-  std::snprintf(line, sizeof line, "%-42s %-28s %-20s %-44s %-14s\n", "driver", "proportional", "error/tol (max)",
-                "error/tol over 1, 4, 16, 64 t_end", "error control");
-  out << line;
-  for (const auto& a : audits) {
-    std::snprintf(line, sizeof line, "%-42s %-28s %-20s %-44s %-14s\n", a.driver.c_str(),
-                  a.proportional.measured.c_str(),
-                  a.error_control.measured.size() > 16 ? a.error_control.measured.substr(16).c_str() : "-",
-                  horizon_cell(a).c_str(), outcome_name(a.error_control.result).c_str());
-    out << line;
-  }
+  std::vector<std::vector<std::string>> rows{
+      {"driver", "proportional", "error/tol (max)", "error/tol over 1, 4, 16, 64 t_end", "error control"}};
+  for (const auto& a : audits)
+    rows.push_back({a.driver, a.proportional.measured,
+                    a.error_control.measured.size() > 16 ? a.error_control.measured.substr(16) : "-", horizon_cell(a),
+                    outcome_name(a.error_control.result)});
+  bool cut = false;
+  for (const auto& l : format_columns(std::move(rows), {48, 40, 24, 48, 24}, cut)) out << l << "\n";
+  if (cut) out << "(cells cut at their first line or width: the report's drivers.md and drivers.json hold them whole)\n";
 }
 
 std::string drivers_to_json(const std::vector<driver_audit>& audits, bool timing) {

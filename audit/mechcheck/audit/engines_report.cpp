@@ -69,35 +69,40 @@ std::string verdict_line(const verdict& v) {
 }  // namespace
 
 void print_engines(std::ostream& out, const std::vector<engine_audit>& audits, const std::vector<shape_audit>& shapes) {
-  char line[640];
-  std::snprintf(line, sizeof line, "%-28s %-20s %-46s %-34s %-34s\n", "integrator", "scenario", "order by class",
-                "energy", "angular momentum");
-  out << line;
+  // A table that stays a table (format_columns): a long cell, a failure with a child's
+  // traceback, long evidence cut to a line, and the table says where the whole text is.
+  bool cut = false;
+  const auto clip = [&cut](const std::string& text) { return clip_line(text, 160, cut); };
+  std::vector<std::vector<std::string>> rows{{"integrator", "scenario", "order by class", "energy", "angular momentum"}};
+  for (const auto& a : audits)
+    for (const auto& s : a.scenarios)
+      rows.push_back({a.integrator, s.scenario, fit_text(s), growth(s.energy_class, s.energy_growth, s.energy_max),
+                      growth(s.momentum_class, s.momentum_growth, s.momentum_max)});
+  const std::vector<std::string> lines = format_columns(std::move(rows), {56, 24, 60, 44, 44}, cut);
+  out << lines.front() << "\n";
+  std::size_t row = 1;
   for (const auto& a : audits) {
     for (const auto& s : a.scenarios) {
-      std::snprintf(line, sizeof line, "%-28s %-20s %-46s %-34s %-34s\n", a.integrator.c_str(), s.scenario.c_str(),
-                    fit_text(s).c_str(), growth(s.energy_class, s.energy_growth, s.energy_max).c_str(),
-                    growth(s.momentum_class, s.momentum_growth, s.momentum_max).c_str());
-      out << line;
-      if (!s.failure.empty()) out << "    failed: " << s.failure << "\n";
-      if (s.constraint_max) out << "    constraint: " << constraint_text(s) << "\n";
-      if (!s.model_differs.empty()) out << "    order not judged: " << s.model_differs << "\n";
-      if (!s.held.empty()) out << "    " << s.scenario << ": " << s.held << "\n";
+      out << lines[row++] << "\n";
+      if (!s.failure.empty()) out << "    failed: " << clip(s.failure) << "\n";
+      if (s.constraint_max) out << "    constraint: " << clip(constraint_text(s)) << "\n";
+      if (!s.model_differs.empty()) out << "    order not judged: " << clip(s.model_differs) << "\n";
+      if (!s.held.empty()) out << "    " << s.scenario << ": " << clip(s.held) << "\n";
     }
-    out << "  order: declared " << a.order.declared << ", measured " << a.order.measured << ": "
-        << outcome_name(a.order.result) << (a.order.needs.empty() ? "" : " (needs " + a.order.needs + ")") << "\n";
+    out << "  order: declared " << a.order.declared << ", measured " << clip(a.order.measured) << ": "
+        << outcome_name(a.order.result) << (a.order.needs.empty() ? "" : " (needs " + clip(a.order.needs) + ")") << "\n";
     for (const verdict* v : {&a.symplectic, &a.energy})
       if (v->result != verdict::outcome::not_measured && v->result != verdict::outcome::not_declared)
         out << "  " << v->claim << ": declared " << v->declared << ", measured " << v->measured << ": "
-            << outcome_name(v->result) << " (" << v->evidence << ")\n";
+            << outcome_name(v->result) << " (" << clip(v->evidence) << ")\n";
   }
-  for (const auto& a : shapes) {
-    std::snprintf(line, sizeof line, "inertia %-10s %-12s %s\n", a.engine.c_str(), a.shape.c_str(),
-                  !a.failure.empty()   ? ("failed: " + a.failure).c_str()
-                  : a.refused.empty() ? ("largest relative error " + sci(a.relative_error)).c_str()
-                                      : "not offered");
-    out << line;
-  }
+  for (const auto& a : shapes)
+    out << "inertia " << a.engine << " " << a.shape << ": "
+        << (!a.failure.empty()   ? "failed: " + clip(a.failure)
+            : a.refused.empty() ? "largest relative error " + sci(a.relative_error)
+                                : "not offered")
+        << "\n";
+  if (cut) out << "(cells and lines cut at their first line or width: the report's engines.md and engines.json hold them whole)\n";
 }
 
 std::string engines_to_json(const std::vector<engine_audit>& audits, const std::vector<shape_audit>& shapes) {

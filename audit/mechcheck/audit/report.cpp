@@ -70,7 +70,7 @@ std::string energy_cell(const stepper_audit& a, const std::string& problem) {
   const drift& e = p->run->invariants.front();
   std::string cell = e.kind;
   if (e.exponent && !e.preserved && e.max_relative < 0.25) cell += format(" (t^%.2f)", *e.exponent);
-  if (!p->run->failure.empty()) cell += ", failed: " + p->run->failure;
+  if (!p->run->failure.empty()) cell += ", failed (below)";  // a child's failure may span lines
   if (p->problem != problem) cell += " [" + p->problem + "]";
   return cell;
 }
@@ -87,7 +87,8 @@ std::string evaluations_cell(const stepper_audit& a) {
   return "-";
 }
 
-/// "claims hold", "CONTRADICTED: order", "claims hold; order: reading", "nothing declared".
+/// "claims hold", "CONTRADICTED: order", "claims hold; order: reading", "order: not
+/// measured" (declared, and no study could run: a child that failed), "nothing declared".
 std::string verdict_cell(const stepper_audit& a) {
   std::string contradicted, other;
   bool any = false;
@@ -104,11 +105,15 @@ std::string verdict_cell(const stepper_audit& a) {
         any = true;
         other += "; " + v.claim + ": " + outcome_text(v.result);
         break;
+      case verdict::outcome::not_measured:
+        if (v.declared != "-") other += "; " + v.claim + ": " + outcome_text(v.result);
+        break;
       default: break;
     }
   }
   if (!contradicted.empty()) return "CONTRADICTED: " + contradicted + other;
-  return (any ? "claims hold" : "nothing declared") + other;
+  if (any) return "claims hold" + other;
+  return other.empty() ? "nothing declared" : other.substr(2);
 }
 
 /// A verdict's readings and needs, after its evidence.
@@ -271,28 +276,62 @@ std::string cell(const std::string& s) {
 
 std::string outcome_name(verdict::outcome o) { return outcome_text(o); }
 
+std::string clip_line(const std::string& text, std::size_t cap, bool& cut) {
+  std::string t = text.substr(0, text.find('\n'));
+  if (cap >= 4 && t.size() > cap) t = t.substr(0, cap - 3) + "...";
+  if (t != text) cut = true;
+  return t;
+}
+
+std::vector<std::string> format_columns(std::vector<std::vector<std::string>> rows,
+                                        const std::vector<std::size_t>& caps, bool& cut) {
+  std::vector<std::size_t> width;
+  for (auto& r : rows)
+    for (std::size_t c = 0; c < r.size(); ++c) {
+      const std::size_t cap = c < caps.size() && caps[c] > 0 ? caps[c] : std::string::npos;
+      r[c] = clip_line(r[c], cap, cut);
+      if (width.size() <= c) width.resize(c + 1, 0);
+      width[c] = std::max(width[c], r[c].size());
+    }
+  std::vector<std::string> lines;
+  for (const auto& r : rows) {
+    std::string t;
+    for (std::size_t c = 0; c < r.size(); ++c) t += r[c] + (c + 1 < r.size() ? std::string(width[c] - r[c].size() + 2, ' ') : "");
+    lines.push_back(t);
+  }
+  return lines;
+}
+
 void print_table(std::ostream& out, const std::vector<stepper_audit>& audits,
                  const report_options& opt) {
   const std::vector<std::string> head = {"stepper", "tier", "order decl/meas", "symplectic",
                                          "symmetric", "energy (" + opt.long_run_problem + ")",
                                          "evals/step", "verdict"};
-  std::vector<std::vector<std::string>> rows;
+  std::vector<std::vector<std::string>> rows{head};
   for (const auto& a : audits)
     rows.push_back({a.stepper, a.tier, claim_cell(a, "order"), claim_cell(a, "symplectic"),
                     claim_cell(a, "symmetric"), energy_cell(a, opt.long_run_problem),
                     evaluations_cell(a), verdict_cell(a)});
-  std::vector<std::size_t> width(head.size());
-  for (std::size_t c = 0; c < head.size(); ++c) {
-    width[c] = head[c].size();
-    for (const auto& r : rows) width[c] = std::max(width[c], r[c].size());
+  bool cut = false;
+  for (const auto& l : format_columns(std::move(rows), {}, cut)) out << l << "\n";
+  // Below the table, a line each: the problems a stepper skipped (with the reason it gave)
+  // and the long runs that failed (the first line of the failure; the report has it whole).
+  const auto first_line = [&cut](const std::string& t) { return clip_line(t, 160, cut); };
+  for (const auto& a : audits) {
+    std::vector<std::pair<std::string, std::string>> skipped;  // (reason, problems), in order
+    for (const auto& p : a.problems) {
+      if (p.skipped.empty()) continue;
+      const auto same = std::find_if(skipped.begin(), skipped.end(), [&](const auto& r) { return r.first == p.skipped; });
+      if (same == skipped.end()) skipped.emplace_back(p.skipped, p.problem);
+      else same->second += ", " + p.problem;
+    }
+    for (const auto& [reason, problems] : skipped)
+      out << a.stepper << " [" << a.tier << "]: skipped " << problems << ": " << first_line(reason) << "\n";
+    for (const auto& p : a.problems)
+      if (p.run && !p.run->failure.empty())
+        out << a.stepper << " [" << a.tier << "]: " << p.problem << ": the long run failed: "
+            << first_line(p.run->failure) << "\n";
   }
-  const auto line = [&](const std::vector<std::string>& r) {
-    for (std::size_t c = 0; c < r.size(); ++c)
-      out << std::left << std::setw(static_cast<int>(width[c])) << r[c]
-          << (c + 1 < r.size() ? "  " : "\n");
-  };
-  line(head);
-  for (const auto& r : rows) line(r);
   for (const auto& a : audits)
     for (const auto& v : a.verdicts)
       if (v.result != verdict::outcome::confirmed && v.result != verdict::outcome::not_declared &&
@@ -300,6 +339,7 @@ void print_table(std::ostream& out, const std::vector<stepper_audit>& audits,
         out << a.stepper << " [" << a.tier << "]: " << v.claim << " declared " << v.declared
             << ", measured " << v.measured << ", " << outcome_text(v.result) << ": " << v.evidence
             << verdict_detail(v) << "\n";
+  if (cut) out << "(lines cut at their first line or width: the report's audit.md and audit.json hold them whole)\n";
 }
 
 /// JSON has no NaN or infinity (nlohmann_json would write null): such a number, which a

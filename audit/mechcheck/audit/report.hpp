@@ -7,6 +7,7 @@
 /// per audit) go to a separate "timing" object and a separate Markdown section, and only
 /// when asked for.
 
+#include <cstddef>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -23,6 +24,18 @@ struct report_options {
 
 /// Words for an outcome (outcome_text: "confirmed", "CONTRADICTED", "not resolvable", ...).
 std::string outcome_name(verdict::outcome o);
+
+/// A console table that stays a table (the stepper, driver and engine tables): each
+/// column as wide as its longest cell up to its cap (0: none), a longer cell cut to its
+/// first line and its cap, ending in "..."; `cut` is set when any cell was cut, so the table
+/// can say that the report holds them whole. The rows (the header first) come back as
+/// lines, without their newlines.
+std::vector<std::string> format_columns(std::vector<std::vector<std::string>> rows,
+                                        const std::vector<std::size_t>& caps, bool& cut);
+
+/// A line of text below a console table: its first line, at most `cap` characters (cut
+/// ending in "..."); sets `cut` when anything was left out.
+std::string clip_line(const std::string& text, std::size_t cap, bool& cut);
 
 /// A verdict as the text of a JSON object: claim, declared, measured, result, evidence and,
 /// where it has them, needs and readings (the drivers' and engines' reports use it too).
