@@ -108,7 +108,9 @@ template <template <class, class> class Method, class T>
 stepper_under_audit<T> method(std::string name) {
   stepper_under_audit<T> s;
   s.name = std::move(name);
-  s.origin = "mechcheck: static members order, symplectic, symmetric";
+  // Where the claims come from, not whose the stepper is: a user's stepper is not stamped
+  // with mechcheck's name (builtin_steppers prefixes its own).
+  s.origin = "static members order, symplectic, symmetric";
   s.declared = detail::claims_of<Method<erased_system<T>, dynamic_vector<T>>>();
   s.structure = detail::structure_of<Method<erased_system<T>, dynamic_vector<T>>>();
   s.make = [](const erased_system<T>& sys) { return detail::make_step<Method, T>(sys); };

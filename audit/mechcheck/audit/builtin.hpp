@@ -28,7 +28,7 @@ using gauss_legendre4 = gauss_legendre<S, V, 4>;
 /// Every stepper of mechcheck/integrators/steppers.hpp, in tier T.
 template <class T>
 std::vector<stepper_under_audit<T>> builtin_steppers() {
-  return {
+  std::vector<stepper_under_audit<T>> all{
       method<explicit_euler, T>("mechcheck::explicit_euler"),
       method<symplectic_euler, T>("mechcheck::symplectic_euler"),
       method<stormer_verlet, T>("mechcheck::stormer_verlet"),
@@ -42,6 +42,8 @@ std::vector<stepper_under_audit<T>> builtin_steppers() {
       method<detail::gauss_legendre3, T>("mechcheck::gauss_legendre3"),
       method<detail::gauss_legendre4, T>("mechcheck::gauss_legendre4"),
   };
+  for (auto& s : all) s.origin = "mechcheck: " + s.origin;
+  return all;
 }
 
 }  // namespace mechcheck::audit

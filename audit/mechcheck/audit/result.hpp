@@ -13,7 +13,11 @@ namespace mechcheck::audit {
 struct audit_options {
   std::vector<std::string> problems;           ///< names to audit on; empty: all
   std::vector<std::string> long_run_problems;  ///< names for the long run; empty: all
-  long long long_run_steps = 100000;           ///< steps of the long run (>= 10^5)
+  /// Steps of the long run: 10^5 by default, 0 for none. A default, not a requirement: the
+  /// growth class needs a run of ten time scales or more (steps * h_long >= 10 time_scale,
+  /// else not resolvable), and more steps tell a random walk from a drift over more decades
+  /// (the examples' 10^4 to 2 * 10^4 keep them quick).
+  long long long_run_steps = 100000;
   /// Largest run of the global study; 0: 2^16 steps in built-in floating types, 2^14 in
   /// the others (a stall of the error above the rounding floor shows at fine steps: a
   /// third-order method whose weights sum to 1 + 1e-11 in double from 2^15 steps on).

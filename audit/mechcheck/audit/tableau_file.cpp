@@ -492,8 +492,12 @@ std::string describe(const tableau_analysis& a) {
   if (!a.method.limit.empty()) os << "  trees evaluated to order " << a.method.max_order << ": " << a.method.limit << "\n";
   os << "  method: " << order_phrase(a.method) << "\n";
   if (a.embedding) os << "  embedding: " << order_phrase(*a.embedding) << "\n";
-  os << "  " << row_sum_words(a.method) << "; stage order " << a.method.stage_order
-     << " (exactly " << a.method.stage_order_exact << "; with B(q) as well: " << a.method.stage_order_bc
+  // The stage order q: the simplifying condition C(q) to the precision the coefficients are
+  // given to, and the q to which it holds exactly; with B(q) as well, Hairer and Wanner's.
+  const int q = a.method.stage_order, q_exact = a.method.stage_order_exact;
+  os << "  " << row_sum_words(a.method) << "; stage order " << q << " (C(" << q << ") to the precision given"
+     << (q_exact == q ? ", and exactly" : ", C(" + std::to_string(q_exact) + ") exactly")
+     << "; B(q) and C(q) together up to q = " << a.method.stage_order_bc
      << "); symplecticity condition max |b_i a_ij + b_j a_ji - b_i b_j| = "
      << sci(a.method.symplectic) << "; symmetry condition " << sci(a.method.symmetric) << " (tolerance "
      << sci(a.method.tolerance) << " at the precision given, " << sci(a.method.exact_tolerance) << " exactly)\n";
