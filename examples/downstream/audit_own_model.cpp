@@ -5,6 +5,7 @@
 // claims on it; we fail when a claim is contradicted.
 #include <cstdio>
 #include <iostream>
+#include <string>
 
 #include <mechcheck/audit/audit.hpp>
 #include <mechcheck/audit/model.hpp>
@@ -47,10 +48,16 @@ int main() {
   model.setup.p0 = {"0.3", "0.6"};
   model.setup.t_end = "10";
   model.setup.integral_names = {"angular momentum"};
+  // Progress on standard error: the reference's certification (the first run's slow part;
+  // later runs read it from the cache) and each study as it starts.
+  const auto progress = [](const std::string& what) { std::cerr << what << "\n"; };
+  audit::reference_settings settings;
+  settings.progress = progress;
   try {
-    const audit::problem<double> problem = audit::model_problem<double>(model);
+    const audit::problem<double> problem = audit::model_problem<double>(model, settings);
     audit::audit_options options;
     options.long_run_problems = {"mexican_hat"};
+    options.progress = progress;
     const auto stepper = audit::method<downstream::position_verlet, double>("position_verlet");
     const audit::stepper_audit result = audit::audit_stepper(stepper, {problem}, options);
     audit::report_options report;
