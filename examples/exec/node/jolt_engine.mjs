@@ -17,8 +17,9 @@
 // after each step). A hinge about y is a HingeConstraint, a ball a PointConstraint, each given
 // in world space at the start, to a static body at the origin (the bindings expose no
 // Body::sFixedToWorld) or between links; Jolt solves them iteratively (its PhysicsSettings:
-// mNumVelocitySteps, mNumPositionSteps at their defaults). Two integrators:
-// mApplyGyroscopicForce off (Jolt's default) and on.
+// mNumVelocitySteps, mNumPositionSteps). Four integrators: Jolt's defaults
+// (mApplyGyroscopicForce off, 10 velocity and 2 position steps), the gyroscopic force on, 40
+// velocity steps, 8 position steps.
 // Jolt computes in single precision (float) in this build.
 import initJolt from 'jolt-physics/wasm-compat';
 import { readFileSync } from 'node:fs';
@@ -28,6 +29,9 @@ import { Refused, frame, scenarioOf, serveEngine } from './protocol.mjs';
 const Jolt = await initJolt();
 const version = JSON.parse(readFileSync(new URL('./node_modules/jolt-physics/package.json', import.meta.url))).version;
 
+// Each integrator: the gyroscopic flag and the constraint solver's iterations (PhysicsSettings.h:
+// mNumVelocitySteps = 10 and mNumPositionSteps = 2 by default; a free body's step reads
+// neither).
 const integrators = [
   { name: 'default', origin: "BodyCreationSettings.mApplyGyroscopicForce = false (Jolt's default)" },
   {
@@ -37,7 +41,21 @@ const integrators = [
       'gyroscopic force should be applied to this body (aka Dzhanibekov effect, see ' +
       'https://en.wikipedia.org/wiki/Tennis_racket_theorem)")',
   },
+  {
+    name: 'velocity_steps_40',
+    origin: "Jolt's defaults but PhysicsSettings.mNumVelocitySteps = 40 (default 10: \"Number of solver velocity iterations to run\")",
+  },
+  {
+    name: 'position_steps_8',
+    origin: "Jolt's defaults but PhysicsSettings.mNumPositionSteps = 8 (default 2: \"Number of solver position iterations to run\")",
+  },
 ];
+const settingsOf = {
+  default: { gyroscopic: false, velocitySteps: 10, positionSteps: 2 },
+  gyroscopic: { gyroscopic: true, velocitySteps: 10, positionSteps: 2 },
+  velocity_steps_40: { gyroscopic: false, velocitySteps: 40, positionSteps: 2 },
+  position_steps_8: { gyroscopic: false, velocitySteps: 10, positionSteps: 8 },
+};
 
 const LAYER = 0;
 const arr = (v) => [v.GetX(), v.GetY(), v.GetZ()];
@@ -68,10 +86,20 @@ function makeSystem(gravity) {
 
 class Run {
   constructor(integrator, scenario) {
-    if (!integrators.some((i) => i.name === integrator)) throw new Refused(`no integrator ${integrator}`);
+    if (!Object.hasOwn(settingsOf, integrator)) throw new Refused(`no integrator ${integrator}`);
+    const chosen = settingsOf[integrator];
     const s = scenarioOf(scenario);
     this.s = s;
     this.jolt = makeSystem(s.gravity);
+    const physicsSettings = this.jolt.GetPhysicsSystem().GetPhysicsSettings();
+    if (physicsSettings.mNumVelocitySteps !== 10 || physicsSettings.mNumPositionSteps !== 2)
+      throw new Error(`Jolt's default solver steps read ${physicsSettings.mNumVelocitySteps} and ${physicsSettings.mNumPositionSteps}, not 10 and 2`);
+    physicsSettings.mNumVelocitySteps = chosen.velocitySteps;
+    physicsSettings.mNumPositionSteps = chosen.positionSteps;
+    this.jolt.GetPhysicsSystem().SetPhysicsSettings(physicsSettings);
+    const set = this.jolt.GetPhysicsSystem().GetPhysicsSettings();
+    if (set.mNumVelocitySteps !== chosen.velocitySteps || set.mNumPositionSteps !== chosen.positionSteps)
+      throw new Error('the solver steps were not set');
     const bodies = this.jolt.GetPhysicsSystem().GetBodyInterface();
     this.interface = bodies;
     this.shape = new Jolt.SphereShape(0.1, null);
@@ -86,7 +114,7 @@ class Run {
       c.mAngularDamping = 0;
       c.mMaxAngularVelocity = 1e6;
       c.mAllowSleeping = false;
-      c.mApplyGyroscopicForce = integrator === 'gyroscopic';
+      c.mApplyGyroscopicForce = chosen.gyroscopic;
       const b = bodies.CreateBody(c);
       Jolt.destroy(c);
       bodies.AddBody(b.GetID(), Jolt.EActivation_Activate);
