@@ -215,7 +215,7 @@ child& session::live() {
   if (current) return *current;
   if (failures > options.restarts)
     throw exec_error(prefix() + "not restarted after " + std::to_string(failures) + " failures (the first child and " +
-                     std::to_string(options.restarts) + " restarts; the last failure: " + last_failure + ")");
+                     std::to_string(options.restarts) + (options.restarts == 1 ? " restart" : " restarts") + "; the last failure: " + last_failure + ")");
   auto c = std::make_unique<child>(command, options);
   const json h = c->receive("the handshake");
   exec_protocol::handshake_fields f;
