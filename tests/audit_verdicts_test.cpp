@@ -10,6 +10,7 @@
 #include <map>
 #include <optional>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -486,6 +487,62 @@ TEST(audit_verdicts, an_unresolved_embedded_companion_does_not_make_a_reading) {
   for (const auto unresolved : {outcome::not_resolvable, outcome::not_measured,
                                 outcome::to_precision_given, outcome::exceeds})
     EXPECT_EQ(stepper_with("unresolved companion", outcome::exceeds, unresolved), outcome::exceeds);
+}
+
+
+/// The console tables stay tables: a declared order that nothing measured is said in the
+/// verdict column (not "nothing declared"), a skipped problem and a failed long run get a
+/// line below the table, and a child's multi-line traceback stays in the report.
+TEST(audit_report, the_stepper_table_stays_a_table_and_says_what_was_not_measured) {
+  audit::stepper_audit a;
+  a.stepper = "exec::child";
+  a.tier = "double";
+  audit::verdict order;
+  order.claim = "order";
+  order.declared = "4";
+  order.measured = "-";
+  order.result = outcome::not_measured;
+  audit::verdict symplectic;
+  symplectic.claim = "symplectic";
+  symplectic.declared = symplectic.measured = "-";
+  symplectic.result = outcome::not_declared;
+  a.verdicts = {order, symplectic};
+  audit::problem_audit skipped, failed;
+  skipped.problem = "free_top";
+  skipped.skipped = "needs a separable H";
+  failed.problem = "kepler_e0.5";
+  failed.run = audit::long_run{};
+  failed.run->failure = "the child exited with status 1\nTraceback (most recent call last):\n  File \"child.py\"";
+  a.problems = {skipped, failed};
+  std::ostringstream out;
+  audit::print_table(out, {a});
+  std::vector<std::string> lines;
+  std::istringstream in(out.str());
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  ASSERT_GE(lines.size(), 5u) << out.str();
+  EXPECT_EQ(lines[1].rfind("exec::child", 0), 0u) << out.str();
+  EXPECT_NE(lines[1].find("order: not measured"), std::string::npos) << lines[1];
+  EXPECT_EQ(out.str().find("nothing declared"), std::string::npos) << out.str();
+  EXPECT_EQ(out.str().find("Traceback"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("exec::child [double]: skipped free_top: needs a separable H"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("kepler_e0.5: the long run failed: the child exited with status 1\n"), std::string::npos)
+      << out.str();
+  EXPECT_NE(out.str().find("hold them whole"), std::string::npos) << out.str();
+}
+
+TEST(audit_report, columns_are_as_wide_as_their_cells_up_to_a_cap) {
+  bool cut = false;
+  const auto lines = audit::format_columns({{"a", "b", "c"}, {"longer", "x", "y"}}, {}, cut);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0], "a       b  c");
+  EXPECT_EQ(lines[1], "longer  x  y");
+  EXPECT_FALSE(cut);
+  const auto capped = audit::format_columns({{"name", "v"}, {"a name of twenty chars", "1"}}, {10, 0}, cut);
+  EXPECT_EQ(capped[1], "a name ...  1");
+  EXPECT_TRUE(cut);
+  bool cut_line = false;
+  EXPECT_EQ(audit::clip_line("first\nsecond", 160, cut_line), "first");
+  EXPECT_TRUE(cut_line);
 }
 
 }  // namespace audit_verdicts
