@@ -173,7 +173,14 @@ class Run {
 
   applyForces() {
     const s = this.s;
-    const force = (k, f) => this.interface.AddForce(this.bodies[k].GetID(), new Jolt.Vec3(...f), Jolt.EActivation_Activate);
+    // One Vec3 for every force of the run: a `new Jolt.Vec3` is allocated on the WebAssembly
+    // heap until destroyed, and one a force a step ran the heap out (Aborted(OOM)) over the
+    // audit's thousands of runs.
+    this.forceVector ??= new Jolt.Vec3(0, 0, 0);
+    const force = (k, f) => {
+      this.forceVector.Set(f[0], f[1], f[2]);
+      this.interface.AddForce(this.bodies[k].GetID(), this.forceVector, Jolt.EActivation_Activate);
+    };
     if (s.central !== 0) {
       const x = arr(this.bodies[0].GetCenterOfMassPosition()), r = Math.hypot(...x);
       force(0, x.map((xi) => (-s.mass * s.central * xi) / (r * r * r)));
@@ -211,6 +218,7 @@ class Run {
       this.interface.DestroyBody(b.GetID());
     }
     Jolt.destroy(this.jolt);
+    if (this.forceVector) Jolt.destroy(this.forceVector);
   }
 }
 
