@@ -607,6 +607,54 @@ TEST(engines, the_shape_audit_has_known_answers) {
   EXPECT_LT((audit::exact_principal_moments(two) - expected).cwiseQuotient(expected).cwiseAbs().maxCoeff(), 4 * eps);
 }
 
+TEST(engines, a_shape_without_a_mass_is_judged_at_the_mass_the_engine_gives_it) {
+  // Without a mass: the box of a density of 1000 (the exact solid: no error), a fixed mass 1
+  // and unit moments whatever the shape (the box's error derived from its smallest moment,
+  // m (0.3^2 + 0.5^2) / 12), a static body of mass 0 (nothing compared, nothing NaN), a
+  // negative mass and a NaN (failures, each its own row).
+  constexpr double eps = 2.220446049250313e-16;
+  const auto box = audit::shapes().front();
+  ASSERT_EQ(box.name, "box");
+  ASSERT_NEAR(audit::shape_volume(box), 0.3 * 0.5 * 0.7, 2 * eps * 0.105);
+  for (const double given : {-1.0, 0.0, 1.0, 1000.0, std::nan("")}) {
+    audit::engine_shapes e;
+    e.engine = "e";
+    e.moments = [](const audit::shape& s) -> Eigen::Vector3d { return audit::exact_principal_moments(s); };
+    e.without_mass = [given](const audit::shape& s) {
+      audit::shape at = s;
+      at.mass = given == 1000 ? 1000 * audit::shape_volume(s) : given;
+      const Eigen::Vector3d m = given == 1000 ? audit::exact_principal_moments(at) : Eigen::Vector3d::Constant(given == 1 ? 1 : 0);
+      return audit::engine_default_mass{at.mass, m, "said"};
+    };
+    const auto rows = audit::audit_shapes(e);
+    ASSERT_EQ(rows.size(), 2 * audit::shapes().size());
+    const auto& a = rows[1];
+    ASSERT_FALSE(a.mass_given);
+    EXPECT_TRUE(rows[0].mass_given && rows[0].relative_error == 0);
+    if (given < 0 || std::isnan(given)) {
+      EXPECT_NE(a.failure.find(given < 0 ? "a negative mass" : "is not finite"), std::string::npos) << a.failure;
+      continue;
+    }
+    EXPECT_TRUE(a.failure.empty()) << a.failure;
+    EXPECT_EQ(a.said, "said");
+    if (given == 0) {
+      EXPECT_EQ(a.relative_error, 0);
+      EXPECT_EQ(a.density, 0);
+      EXPECT_EQ(a.exact, Eigen::Vector3d::Zero());
+    } else if (given == 1) {
+      EXPECT_NEAR(a.relative_error, 12 / (0.3 * 0.3 + 0.5 * 0.5) - 1, 64 * eps);
+      EXPECT_NEAR(a.density, 1 / 0.105, 4 * eps / 0.105);
+    } else {
+      EXPECT_EQ(a.relative_error, 0);
+      EXPECT_NEAR(a.density, 1000, 4 * eps * 1000);
+    }
+    const std::string md = audit::engines_to_markdown({}, rows), js = audit::engines_to_json({}, rows);
+    EXPECT_NE(md.find("### A shape without mass properties"), std::string::npos);
+    for (const std::string& text : {md, js}) EXPECT_EQ(text.find("nan"), std::string::npos) << text;
+    EXPECT_NE(js.find("\"mass_given\": false"), std::string::npos);
+  }
+}
+
 TEST(engines, random_bodies_are_drawn_by_their_seed_and_start_where_their_references_do) {
   const auto four = audit::random_body_scenarios(4, 7), two = audit::random_body_scenarios(2, 7);
   const auto other = audit::random_body_scenarios(1, 8);

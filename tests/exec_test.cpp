@@ -365,6 +365,39 @@ TEST(exec, a_broken_reading_ends_the_child_with_a_typed_error_and_the_audit_goes
   EXPECT_FALSE(a.scenarios.at(0).global.points.empty());
 }
 
+TEST(exec, an_engine_child_gives_its_shapes_inertia_with_and_without_a_mass) {
+  // The child's box: exact moments from its edges; without a mass, a density of 1000. Each
+  // row is the closed form to rounding (the box's moments and its volume: a few roundings).
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  for (const char* mode : {"engine", "engine_decimal"}) {
+    const auto t = audit::exec_engine(child(mode));
+    ASSERT_TRUE(t.shapes && t.shapes->without_mass) << mode;
+    const auto rows = audit::audit_shapes(*t.shapes);
+    ASSERT_EQ(rows.size(), 2 * audit::shapes().size());
+    for (const auto& a : rows) {
+      if (a.shape != "box") {
+        EXPECT_EQ(a.refused, "exec::test_engine/" + std::string(mode) + ": this engine has boxes only") << a.shape;
+        continue;
+      }
+      EXPECT_TRUE(a.failure.empty()) << a.failure;
+      EXPECT_LE(a.relative_error, 8 * eps) << mode << (a.mass_given ? "" : " without a mass");
+      if (a.mass_given) continue;
+      const Eigen::Vector3d e = audit::shapes().front().size;
+      EXPECT_NEAR(a.mass, 1000 * e.prod(), 4 * eps * a.mass);
+      EXPECT_NEAR(a.density, 1000, 8 * eps * 1000);
+      EXPECT_EQ(a.said, "a density of 1000");
+    }
+    EXPECT_EQ(t.failures(), 0) << t.last_failure();
+  }
+  // A reply without its mass is the row's failure, and the next request is answered.
+  const auto broken = audit::exec_engine(child("engine_broken"));
+  const auto rows = audit::audit_shapes(*broken.shapes);
+  EXPECT_NE(rows.at(1).failure.find("the reply has no \"mass\""), std::string::npos) << rows.at(1).failure;
+  EXPECT_FALSE(rows.at(1).mass_given);
+  EXPECT_TRUE(rows.at(0).failure.empty() && rows.at(0).refused.empty()) << rows.at(0).failure;
+  EXPECT_EQ(rows.at(2).refused, "exec::test_engine/engine_broken: this engine has boxes only");
+}
+
 TEST(exec, every_double_round_trips_through_the_protocols_text_in_both_forms) {
   // Random bit patterns (every exponent, both signs), subnormals, the extremes and the
   // signed zeros and infinities: written by the parent as hexadecimal or 17 digits, read back

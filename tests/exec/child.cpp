@@ -24,6 +24,9 @@
 //   engine_float     the same, its state rounded to float after every step (an engine
 //                    that computes in single precision, as WebAssembly physics builds do)
 //   engine_float_declared  the same, its handshake saying "precision": "single"
+//                The engine modes answer "shape" requests for a box (its moments, or without a
+//                mass a density of 1000) and refuse the other shapes; engine_broken's reply
+//                to a box without a mass has no "mass".
 //   engine COST_NS   the engine, each step taking COST_NS nanoseconds of wall time (a busy
 //                    wait: bench/exec_bench.cpp)
 #include <unistd.h>
@@ -185,6 +188,8 @@ void serve_engine(long cost_ns) {
   if (decimal) hello["numbers"] = "decimal";
   const bool single = mode == "engine_float" || mode == "engine_float_declared";
   if (mode == "engine_float_declared") hello["precision"] = "single";
+  hello["shapes"] = true;
+  hello["shapes_without_mass"] = true;
   send(hello);
   std::map<long long, pendulum> runs;
   for (;;) {
@@ -210,6 +215,20 @@ void serve_engine(long cost_ns) {
       p.rate = w[1];
       runs[id] = p;
       send({{"ok", true}, {"reading", reading(p, false)}});
+    } else if (op == "shape") {
+      const json& sh = r["shape"];
+      if (sh["name"] != "box") {
+        send({{"refused", "this engine has boxes only"}});
+        continue;
+      }
+      const vec e = nums(sh["size"]);
+      const bool given = sh.contains("mass");
+      const double m = given ? num(sh["mass"]) : 1000 * e[0] * e[1] * e[2];
+      json reply = {{"moments", {m * (e[1] * e[1] + e[2] * e[2]) / 12, m * (e[0] * e[0] + e[2] * e[2]) / 12,
+                                 m * (e[0] * e[0] + e[1] * e[1]) / 12}}};
+      if (!given && mode != "engine_broken") reply["mass"] = m;
+      if (!given) reply["said"] = "a density of 1000";
+      send(reply);
     } else if (op == "end") {
       runs.erase(id);
       send({{"ok", true}});

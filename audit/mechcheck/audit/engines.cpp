@@ -574,22 +574,43 @@ engine_audit audit_engine(const engine_integrator& in, const engine_options& opt
 
 std::vector<shape_audit> audit_shapes(const engine_shapes& engine) {
   std::vector<shape_audit> out;
-  for (const shape& s : shapes()) {
+  // One row: `measure` fills measured (and, without a mass, mass and said); exact follows
+  // from the mass the moments are for.
+  const auto row = [&](const shape& s, bool mass_given, const auto& measure) {
     shape_audit a;
     a.engine = engine.engine;
     a.shape = s.name;
-    a.exact = exact_principal_moments(s);
+    a.mass_given = mass_given;
+    a.mass = s.mass;
     try {
-      a.measured = engine.moments(s);
+      measure(a);
       std::sort(a.measured.data(), a.measured.data() + 3);
-      if (!a.measured.allFinite()) throw non_finite_error(engine.engine + ": the inertia of " + s.name + " is not finite");
-      a.relative_error = ((a.measured - a.exact).cwiseAbs().cwiseQuotient(a.exact)).maxCoeff();
+      const std::string what = engine.engine + ": the inertia of " + s.name + (mass_given ? "" : " without a mass");
+      if (!a.measured.allFinite() || !std::isfinite(a.mass)) throw non_finite_error(what + " is not finite");
+      if (a.mass < 0) throw error(what + ": a negative mass " + detail::sci(a.mass));
+      shape at_mass = s;
+      at_mass.mass = a.mass;
+      a.density = a.mass / shape_volume(s);
+      if (a.mass > 0) {
+        a.exact = exact_principal_moments(at_mass);
+        a.relative_error = ((a.measured - a.exact).cwiseAbs().cwiseQuotient(a.exact)).maxCoeff();
+      }
     } catch (const scenario_refused& e) {
       a.refused = e.what();
     } catch (const std::exception& e) {
       a.failure = e.what();  // an engine's error, a non-finite moment, a child that broke the protocol
     }
     out.push_back(std::move(a));
+  };
+  for (const shape& s : shapes()) {
+    row(s, true, [&](shape_audit& a) { a.measured = engine.moments(s); });
+    if (engine.without_mass)
+      row(s, false, [&](shape_audit& a) {
+        const engine_default_mass d = engine.without_mass(s);
+        a.mass = d.mass;
+        a.measured = d.moments;
+        a.said = d.said;
+      });
   }
   return out;
 }

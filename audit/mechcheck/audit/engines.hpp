@@ -241,6 +241,13 @@ struct engine_options {
 engine_audit audit_engine(const engine_integrator& integrator, const engine_options& opt = {});
 
 
+/// What an engine gives a body built from a shape alone, no mass given.
+struct engine_default_mass {
+  double mass = 0;
+  Eigen::Vector3d moments{0, 0, 0};  ///< principal, any order
+  std::string said;                  ///< how the engine got them, in its terms (may be empty)
+};
+
 /// How an engine computes the inertia of its shapes from mass and dimensions.
 struct engine_shapes {
   std::string engine;  ///< e.g. "mujoco"
@@ -248,6 +255,10 @@ struct engine_shapes {
   /// The engine's principal moments (any order) of a shape; throws scenario_refused for a
   /// shape the engine does not offer.
   std::function<Eigen::Vector3d(const shape&)> moments;
+  /// The mass and moments of a body given the shape and no mass properties (the engine's
+  /// default density, a default mass, or a static body); empty where the engine is not asked.
+  /// The shape's mass is not passed on. Throws scenario_refused as moments does.
+  std::function<engine_default_mass(const shape&)> without_mass;
 };
 
 /// One engine's inertia of one shape against the exact one.
@@ -255,7 +266,12 @@ struct shape_audit {
   std::string engine, shape, refused;
   std::string failure;  ///< non-empty: the engine failed to give the moments (its error)
   Eigen::Vector3d measured{0, 0, 0}, exact{0, 0, 0};  ///< ascending
-  double relative_error = 0;  ///< max over the moments of |measured - exact| / exact
+  double relative_error = 0;  ///< max over the moments of |measured - exact| / exact; 0 for mass 0
+  /// false: the body was given the shape alone, and `mass` is the engine's; exact is then the
+  /// uniform solid of that mass, and `density` that mass over the shape's volume.
+  bool mass_given = true;
+  double mass = 0, density = 0;
+  std::string said;  ///< the engine's account of a default mass (engine_default_mass::said)
 };
 
 std::vector<shape_audit> audit_shapes(const engine_shapes& engine);

@@ -66,6 +66,12 @@ std::string verdict_line(const verdict& v) {
     t += " Reading \"" + r.reading + "\": measured " + r.measured + (r.holds ? ", holds." : ", does not hold.");
   return t;
 }
+std::string default_mass_text(const shape_audit& a) {
+  if (a.mass == 0) return "mass 0" + (a.said.empty() ? std::string() : " (" + a.said + ")");
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "mass %.6g (mass / volume %.6g)", a.mass, a.density);
+  return buf + (", largest relative error " + sci(a.relative_error) + " against the uniform solid of that mass");
+}
 }  // namespace
 
 void print_engines(std::ostream& out, const std::vector<engine_audit>& audits, const std::vector<shape_audit>& shapes) {
@@ -97,10 +103,12 @@ void print_engines(std::ostream& out, const std::vector<engine_audit>& audits, c
             << outcome_name(v->result) << " (" << clip(v->evidence) << ")\n";
   }
   for (const auto& a : shapes)
-    out << "inertia " << a.engine << " " << a.shape << ": "
+    if (a.mass_given || a.refused.empty())  // a shape not offered is said once
+    out << "inertia " << a.engine << " " << a.shape << (a.mass_given ? "" : " without a mass") << ": "
         << (!a.failure.empty()   ? "failed: " + clip(a.failure)
-            : a.refused.empty() ? "largest relative error " + sci(a.relative_error)
-                                : "not offered")
+            : !a.refused.empty() ? std::string("not offered")
+            : a.mass_given       ? "largest relative error " + sci(a.relative_error)
+                                 : default_mass_text(a))
         << "\n";
   if (cut) out << "(cells and lines cut at their first line or width: the report's engines.md and engines.json hold them whole)\n";
 }
@@ -174,6 +182,14 @@ std::string engines_to_json(const std::vector<engine_audit>& audits, const std::
       j["exact"] = {a.exact(0), a.exact(1), a.exact(2)};
       j["relative_error"] = a.relative_error;
     }
+    if (!a.mass_given) {
+      j["mass_given"] = false;
+      if (a.failure.empty() && a.refused.empty()) {
+        j["mass"] = a.mass;
+        j["density"] = a.density;
+      }
+      if (!a.said.empty()) j["said"] = a.said;
+    }
     shape_rows.push_back(j);
   }
   return json{{"integrators", all}, {"shapes", shape_rows}}.dump(1) + "\n";
@@ -224,6 +240,7 @@ std::string engines_to_markdown(const std::vector<engine_audit>& audits, const s
          << ", " << s.size(2) << ")\n";
     md << "\n| engine | shape | exact moments | engine's moments | largest relative error |\n|---|---|---|---|---|\n";
     for (const auto& a : shapes) {
+      if (!a.mass_given) continue;
       md << "| " << a.engine << " | " << a.shape << " | ";
       if (!a.failure.empty()) {
         md << "- | failed: " << a.failure << " | - |\n";
@@ -239,6 +256,35 @@ std::string engines_to_markdown(const std::vector<engine_audit>& audits, const s
       md << buf;
     }
     md << "\n";
+    if (std::any_of(shapes.begin(), shapes.end(), [](const auto& a) { return !a.mass_given; })) {
+      md << "### A shape without mass properties\n\nA body given the shape alone (no mass, no inertia): the "
+            "mass the engine gives it, that mass over the shape's volume, and its moments against the uniform "
+            "solid of that mass.\n\n"
+            "| engine | shape | engine's mass | mass / volume | exact moments at that mass | engine's moments | "
+            "largest relative error | the engine's account |\n|---|---|---|---|---|---|---|---|\n";
+      for (const auto& a : shapes) {
+        if (a.mass_given) continue;
+        md << "| " << a.engine << " | " << a.shape << " | ";
+        if (!a.failure.empty()) {
+          md << "- | - | - | failed: " << a.failure << " | - | - |\n";
+          continue;
+        }
+        if (!a.refused.empty()) {
+          md << "- | - | - | not offered | - | - |\n";
+          continue;
+        }
+        char buf[320];
+        if (a.mass > 0)
+          std::snprintf(buf, sizeof buf, "%.6g | %.6g | %.6g, %.6g, %.6g | %.6g, %.6g, %.6g | %s | ", a.mass, a.density,
+                        a.exact(0), a.exact(1), a.exact(2), a.measured(0), a.measured(1), a.measured(2),
+                        sci(a.relative_error).c_str());
+        else
+          std::snprintf(buf, sizeof buf, "0 | 0 | - | %.6g, %.6g, %.6g | - (mass 0) | ", a.measured(0), a.measured(1),
+                        a.measured(2));
+        md << buf << (a.said.empty() ? "-" : a.said) << " |\n";
+      }
+      md << "\n";
+    }
   }
   for (const auto& a : audits) {
     md << "## " << a.integrator << "\n\n" << a.origin << "\n\n- " << verdict_line(a.order) << "\n";

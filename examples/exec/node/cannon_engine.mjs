@@ -148,11 +148,11 @@ class Run {
   }
 }
 
-/** The principal moments cannon-es computes for a shape: a Body of the shape's mass with the
- * shape added (Body.addShape calls updateMassProperties), its Body.inertia. */
-function moments(shape) {
+/** A Body with the shape added (Body.addShape calls updateMassProperties): of the shape's
+ * mass, or of the Body's options without one. */
+function bodyOf(shape) {
   const [a, b] = shape.size;
-  const body = new CANNON.Body({ mass: shape.mass });
+  const body = new CANNON.Body(shape.mass === undefined ? {} : { mass: shape.mass });
   if (shape.name === 'box') body.addShape(new CANNON.Box(v3(shape.size.map((x) => x / 2))));
   else if (shape.name === 'sphere') body.addShape(new CANNON.Sphere(a));
   else if (shape.name === 'cylinder') body.addShape(new CANNON.Cylinder(a, a, b, 32));
@@ -164,7 +164,25 @@ function moments(shape) {
     // centre of mass: not the audit's cone.
     throw new Refused(`cannon-es ${version} has no cone shape`);
   else throw new Refused(`cannon-es ${version} has no ${shape.name} shape`);
-  return arr(body.inertia);
+  return body;
+}
+
+/** The principal moments cannon-es computes for a shape of a given mass: Body.inertia. */
+function moments(shape) {
+  return arr(bodyOf(shape).inertia);
+}
+
+/** What cannon-es gives a Body with the shape and no mass option: Body.mass and inertia. */
+function withoutMass(shape) {
+  const body = bodyOf(shape);
+  const type = Object.keys(CANNON.BODY_TYPES).find((k) => CANNON.BODY_TYPES[k] === body.type) ?? String(body.type);
+  return {
+    mass: body.mass,
+    moments: arr(body.inertia),
+    said:
+      `new Body({}): Body.mass ${body.mass}, Body.type ${type} (its constructor: ` +
+      "`const mass = typeof options.mass === 'number' ? options.mass : 0`, `this.type = mass <= 0.0 ? Body.STATIC : Body.DYNAMIC`), Body.inertia",
+  };
 }
 
 await serveEngine(
@@ -175,4 +193,5 @@ await serveEngine(
   },
   (integrator, scenario) => new Run(integrator, scenario),
   moments,
+  withoutMass,
 );

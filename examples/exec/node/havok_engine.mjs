@@ -158,24 +158,54 @@ class Run {
   }
 }
 
-/** The principal moments Havok computes for a shape: HP_Shape_BuildMassProperties (at the
- * shape's default density; its inertia is "for mass of 1", so times the shape's mass). */
-function moments(shape) {
+/** A shape in Havok; the audit's axis (z) is the cylinder's and capsule's. */
+function shapeOf(shape) {
   const [a, b, c] = shape.size;
-  let sh;
-  if (shape.name === 'box') sh = ok('box', HK.HP_Shape_CreateBox([0, 0, 0], [0, 0, 0, 1], [a, b, c]));
-  else if (shape.name === 'sphere') sh = ok('sphere', HK.HP_Shape_CreateSphere([0, 0, 0], a));
-  else if (shape.name === 'cylinder') sh = ok('cylinder', HK.HP_Shape_CreateCylinder([0, 0, -b / 2], [0, 0, b / 2], a));
-  else if (shape.name === 'capsule') sh = ok('capsule', HK.HP_Shape_CreateCapsule([0, 0, -b / 2], [0, 0, b / 2], a));
-  else if (shape.name === 'two_spheres') {
-    sh = ok('container', HK.HP_Shape_CreateContainer());
+  if (shape.name === 'box') return ok('box', HK.HP_Shape_CreateBox([0, 0, 0], [0, 0, 0, 1], [a, b, c]));
+  if (shape.name === 'sphere') return ok('sphere', HK.HP_Shape_CreateSphere([0, 0, 0], a));
+  if (shape.name === 'cylinder') return ok('cylinder', HK.HP_Shape_CreateCylinder([0, 0, -b / 2], [0, 0, b / 2], a));
+  if (shape.name === 'capsule') return ok('capsule', HK.HP_Shape_CreateCapsule([0, 0, -b / 2], [0, 0, b / 2], a));
+  if (shape.name === 'two_spheres') {
+    const sh = ok('container', HK.HP_Shape_CreateContainer());
     for (const x of [b, -b]) {
       const ball = ok('sphere', HK.HP_Shape_CreateSphere([0, 0, 0], a));
       ok('HP_Shape_AddChild', HK.HP_Shape_AddChild(sh, ball, [[x, 0, 0], [0, 0, 0, 1], [1, 1, 1]]));
     }
-  } else throw new Refused(`this client builds no ${shape.name} in Havok ${version}`);
-  const [, , inertia] = ok('HP_Shape_BuildMassProperties', HK.HP_Shape_BuildMassProperties(sh));
+    return sh;
+  }
+  throw new Refused(`this client builds no ${shape.name} in Havok ${version}`);
+}
+
+/** The principal moments Havok computes for a shape: HP_Shape_BuildMassProperties (at the
+ * shape's default density; its inertia is "for mass of 1", so times the shape's mass). */
+function moments(shape) {
+  const [, , inertia] = ok('HP_Shape_BuildMassProperties', HK.HP_Shape_BuildMassProperties(shapeOf(shape)));
   return inertia.map((i) => i * shape.mass).sort((x, y) => x - y);
+}
+
+/** What Havok gives a dynamic body with the shape and no HP_Body_SetMassProperties:
+ * HP_Body_GetMassProperties ("the mass properties currently used by the body"), its inertia
+ * per unit mass times the mass. */
+function withoutMass(shape) {
+  const sh = shapeOf(shape);
+  const b = ok('HP_Body_Create', HK.HP_Body_Create());
+  try {
+    ok('HP_Body_SetShape', HK.HP_Body_SetShape(b, sh));
+    ok('HP_Body_SetMotionType', HK.HP_Body_SetMotionType(b, HK.MotionType.DYNAMIC));
+    const [, mass, inertia] = ok('HP_Body_GetMassProperties', HK.HP_Body_GetMassProperties(b));
+    const [, built] = ok('HP_Shape_BuildMassProperties', HK.HP_Shape_BuildMassProperties(sh));
+    return {
+      mass,
+      moments: inertia.map((i) => i * mass),
+      said:
+        'HP_Body_GetMassProperties after HP_Body_SetShape and HP_Body_SetMotionType(DYNAMIC); ' +
+        `HP_Shape_BuildMassProperties of the shape gives mass ${built} (its density, HP_Shape_SetDensity: ` +
+        '"Used when calling `HP_Shape_BuildMassProperties()`"), not applied to the body',
+    };
+  } finally {
+    HK.HP_Body_Release(b);
+    HK.HP_Shape_Release(sh);
+  }
 }
 
 await serveEngine(
@@ -188,4 +218,5 @@ await serveEngine(
   },
   (integrator, scenario) => new Run(integrator, scenario),
   moments,
+  withoutMass,
 );

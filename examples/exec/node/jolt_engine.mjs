@@ -222,30 +222,61 @@ class Run {
   }
 }
 
-/** The principal moments Jolt computes for a shape: Shape.GetMassProperties() (about the
- * centre of mass, at Jolt's density 1000) scaled to the shape's mass (MassProperties is linear
- * in the density); Jolt's axis (y) for the cylinder and the capsule is the audit's z, whose
- * moments are then reordered; convex radius 0 where a shape takes one. The shapes are
- * reference-counted by Jolt and left to the child's exit (a few per audit). */
-function moments(shape) {
+/** A shape in Jolt: its axis (y) for the cylinder and the capsule is the audit's z; convex
+ * radius 0 where a shape takes one. The shapes are reference-counted by Jolt and left to the
+ * child's exit (a few per audit). */
+function shapeOf(shape) {
   const [a, b, c] = shape.size;
-  let sh;
-  if (shape.name === 'box') sh = new Jolt.BoxShape(new Jolt.Vec3(a / 2, b / 2, c / 2), 0);
-  else if (shape.name === 'sphere') sh = new Jolt.SphereShape(a);
-  else if (shape.name === 'cylinder') sh = new Jolt.CylinderShape(b / 2, a, 0);
-  else if (shape.name === 'capsule') sh = new Jolt.CapsuleShape(b / 2, a);
-  else if (shape.name === 'two_spheres') {
+  if (shape.name === 'box') return new Jolt.BoxShape(new Jolt.Vec3(a / 2, b / 2, c / 2), 0);
+  if (shape.name === 'sphere') return new Jolt.SphereShape(a);
+  if (shape.name === 'cylinder') return new Jolt.CylinderShape(b / 2, a, 0);
+  if (shape.name === 'capsule') return new Jolt.CapsuleShape(b / 2, a);
+  if (shape.name === 'two_spheres') {
     const compound = new Jolt.StaticCompoundShapeSettings();
     const ball = new Jolt.SphereShapeSettings(a);
     compound.AddShape(new Jolt.Vec3(b, 0, 0), new Jolt.Quat(0, 0, 0, 1), ball, 0);
     compound.AddShape(new Jolt.Vec3(-b, 0, 0), new Jolt.Quat(0, 0, 0, 1), ball, 0);
     const result = compound.Create();
     if (result.HasError()) throw new Error(`Jolt ${version}: ${result.GetError().c_str()}`);
-    sh = result.Get();
-  } else throw new Refused(`this client builds no ${shape.name} in Jolt ${version}`);
-  const p = sh.GetMassProperties();
+    return result.Get();
+  }
+  throw new Refused(`this client builds no ${shape.name} in Jolt ${version}`);
+}
+
+/** The principal moments Jolt computes for a shape: Shape.GetMassProperties() (about the
+ * centre of mass, at Jolt's density 1000) scaled to the shape's mass (MassProperties is linear
+ * in the density); the moments reordered. */
+function moments(shape) {
+  const p = shapeOf(shape).GetMassProperties();
   const diagonal = arr(p.mInertia.GetDiagonal3()).map((x) => (x * shape.mass) / p.mMass);
   return diagonal.sort((x, y) => x - y);
+}
+
+let shapeSystem = null;
+/** What Jolt gives a dynamic body created from the shape alone (BodyCreationSettings'
+ * defaults): its MotionProperties' inverse mass and inverse principal inertia, inverted. */
+function withoutMass(shape) {
+  shapeSystem ??= makeSystem(0);
+  const bodies = shapeSystem.GetPhysicsSystem().GetBodyInterface();
+  const c = new Jolt.BodyCreationSettings(shapeOf(shape), new Jolt.RVec3(0, 0, 0), new Jolt.Quat(0, 0, 0, 1),
+                                          Jolt.EMotionType_Dynamic, LAYER);
+  const calculated = c.mOverrideMassProperties === Jolt.EOverrideMassProperties_CalculateMassAndInertia;
+  const body = bodies.CreateBody(c);
+  Jolt.destroy(c);
+  try {
+    const motion = body.GetMotionProperties();
+    return {
+      mass: 1 / motion.GetInverseMass(),
+      moments: arr(motion.GetInverseInertiaDiagonal()).map((x) => 1 / x),
+      said:
+        `BodyCreationSettings.mOverrideMassProperties ${calculated ? 'CalculateMassAndInertia' : 'not CalculateMassAndInertia'} ` +
+        '(its default: "Tells the system to calculate the mass and inertia based on density"), ConvexShape\'s mDensity ' +
+        '1000 ("Uniform density of the interior of the convex object (kg / m^3)"); MotionProperties.GetInverseMass(), ' +
+        'GetInverseInertiaDiagonal()',
+    };
+  } finally {
+    bodies.DestroyBody(body.GetID());
+  }
 }
 
 await serveEngine(
@@ -258,4 +289,5 @@ await serveEngine(
   },
   (integrator, scenario) => new Run(integrator, scenario),
   moments,
+  withoutMass,
 );

@@ -257,27 +257,45 @@ declared.push({
   claims: { order: 4 },
 });
 
-/** The principal moments MuJoCo computes for a shape: a body without <inertial> whose geom
- * carries the mass (inertiafromgeom), mjModel.body_inertia after loading. */
-function moments(shape) {
-  const [a, b, c] = shape.size, m = text(shape.mass);
+/** A model of one free body whose geoms carry the shape: of the shape's mass (each geom's
+ * mass attribute), or without one; f(model) reads it. */
+function withModel(shape, f) {
+  const [a, b, c] = shape.size;
+  const mass = (m) => (shape.mass === undefined ? '' : ` mass="${text(m)}"`);
   const geoms = {
-    box: `<geom type="box" size="${vec([a / 2, b / 2, c / 2])}" mass="${m}"/>`,
-    sphere: `<geom type="sphere" size="${text(a)}" mass="${m}"/>`,
-    cylinder: `<geom type="cylinder" size="${vec([a, b / 2])}" mass="${m}"/>`,
-    capsule: `<geom type="capsule" size="${vec([a, b / 2])}" mass="${m}"/>`,
-    ellipsoid: `<geom type="ellipsoid" size="${vec([a, b, c])}" mass="${m}"/>`,
+    box: `<geom type="box" size="${vec([a / 2, b / 2, c / 2])}"${mass(shape.mass)}/>`,
+    sphere: `<geom type="sphere" size="${text(a)}"${mass(shape.mass)}/>`,
+    cylinder: `<geom type="cylinder" size="${vec([a, b / 2])}"${mass(shape.mass)}/>`,
+    capsule: `<geom type="capsule" size="${vec([a, b / 2])}"${mass(shape.mass)}/>`,
+    ellipsoid: `<geom type="ellipsoid" size="${vec([a, b, c])}"${mass(shape.mass)}/>`,
     two_spheres:
-      `<geom type="sphere" size="${text(a)}" pos="${text(b)} 0 0" mass="${text(shape.mass / 2)}"/>` +
-      `<geom type="sphere" size="${text(a)}" pos="${text(-b)} 0 0" mass="${text(shape.mass / 2)}"/>`,
+      `<geom type="sphere" size="${text(a)}" pos="${text(b)} 0 0"${mass(shape.mass / 2)}/>` +
+      `<geom type="sphere" size="${text(a)}" pos="${text(-b)} 0 0"${mass(shape.mass / 2)}/>`,
   }[shape.name];
   if (!geoms) throw new Refused(`MuJoCo ${version} has no ${shape.name} geom`);
   const model = mj.MjModel.from_xml_string(`<mujoco><worldbody><body><freejoint/>${geoms}</body></worldbody></mujoco>`);
   try {
-    return Array.from(model.body_inertia.subarray(3, 6));
+    return f(model);
   } finally {
     model.delete();
   }
+}
+
+/** The principal moments MuJoCo computes for a shape: a body without <inertial> whose geom
+ * carries the mass (inertiafromgeom), mjModel.body_inertia after loading. */
+function moments(shape) {
+  return withModel(shape, (model) => Array.from(model.body_inertia.subarray(3, 6)));
+}
+
+/** What MuJoCo gives a body whose geoms carry no mass: mjModel.body_mass and body_inertia. */
+function withoutMass(shape) {
+  return withModel(shape, (model) => ({
+    mass: model.body_mass[1],
+    moments: Array.from(model.body_inertia.subarray(3, 6)),
+    said:
+      'no geom mass or density (XML reference, geom/density: "Material density used to compute the geom mass and ' +
+      'inertia ... The internal default of 1000 is the density of water in SI units"); mjModel.body_mass, body_inertia',
+  }));
 }
 
 await serveEngine(
@@ -288,4 +306,5 @@ await serveEngine(
   },
   (integrator, scenario) => new Run(integrator, scenario),
   moments,
+  withoutMass,
 );

@@ -3,11 +3,13 @@
 // decimal numbers (17 significant digits, which Number() reads exactly); replies carry JSON
 // numbers (JSON.stringify writes the shortest decimal that reads back exactly).
 //
-// serveEngine(hello, start, moments) answers the audit until it closes our input.
+// serveEngine(hello, start, moments, withoutMass) answers the audit until it closes our input.
 // start(integrator, scenario) builds a run, or throws Refused for a scenario the engine cannot
 // express; a run has step(h) (throws on the engine's failure), reading() and optionally
 // modelDiffers and free(). moments(shape) (optional) gives the principal moments the engine
-// computes for a shape ({name, mass, size}), or throws Refused for a shape it does not offer.
+// computes for a shape ({name, mass, size}), or throws Refused for a shape it does not offer;
+// withoutMass(shape) (optional) what the engine gives a body built from the shape ({name,
+// size}) with no mass properties: {mass, moments, said}, said how the engine got them.
 import readline from 'node:readline';
 
 /** A scenario the engine cannot express: the audit lists it as refused, with these words. */
@@ -68,10 +70,11 @@ export function precisionOf(start, integrator) {
   }
 }
 
-export async function serveEngine(hello, start, moments) {
+export async function serveEngine(hello, start, moments, withoutMass) {
   // The precision measured before the handshake, said in the origin.
   const { precision, said } = precisionOf(start, hello.integrators[0].name);
-  send({ protocol: 'mechcheck', version: 1, kind: 'engine', numbers: 'decimal', shapes: !!moments, precision, ...hello,
+  send({ protocol: 'mechcheck', version: 1, kind: 'engine', numbers: 'decimal', shapes: !!moments,
+    ...(withoutMass ? { shapes_without_mass: true } : {}), precision, ...hello,
     origin: `${hello.origin}; ${said}` });
   const runs = new Map();
   const lines = readline.createInterface({ input: process.stdin, crlfDelay: Infinity });
@@ -112,10 +115,11 @@ export async function serveEngine(hello, start, moments) {
         if (r.timed) reply.seconds = seconds;
         send(reply);
       }
-    } else if (r.op === 'shape' && moments) {
+    } else if (r.op === 'shape' && moments && (r.shape.mass !== undefined || withoutMass)) {
       try {
-        const m = moments({ name: r.shape.name, mass: Number(r.shape.mass), size: r.shape.size.map(Number) });
-        send({ moments: m });
+        const size = r.shape.size.map(Number);
+        if (r.shape.mass === undefined) send(withoutMass({ name: r.shape.name, size }));
+        else send({ moments: moments({ name: r.shape.name, mass: Number(r.shape.mass), size }) });
       } catch (e) {
         send(e instanceof Refused ? { refused: e.message } : { error: String(e?.message ?? e) });
       }

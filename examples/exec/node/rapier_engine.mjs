@@ -147,15 +147,18 @@ class Run {
   }
 }
 
-/** The principal moments Rapier computes for a shape: a body with the shape's collider of the
- * shape's mass (ColliderDesc.setMass), its principalInertia(); the audit's axis (z) is
- * Rapier's y for the cylinder, capsule and cone, whose moments are then reordered. */
-function moments(shape) {
+/** A body with the shape's colliders: of the shape's mass (ColliderDesc.setMass) or, without
+ * one, as ColliderDesc makes them (its density, 1 unless set); f(body) reads it. The audit's
+ * axis (z) is Rapier's y for the cylinder, capsule and cone, whose moments are then reordered. */
+function withBody(shape, f) {
   const [a, b, c] = shape.size;
   const world = new RAPIER.World(v3([0, 0, 0]));
   try {
     const body = world.createRigidBody(RAPIER.RigidBodyDesc.dynamic());
-    const collider = (desc, at) => world.createCollider(desc.setMass(at ? shape.mass / 2 : shape.mass).setTranslation(...(at ?? [0, 0, 0])), body);
+    const collider = (desc, at) => {
+      if (shape.mass !== undefined) desc.setMass(at ? shape.mass / 2 : shape.mass);
+      world.createCollider(desc.setTranslation(...(at ?? [0, 0, 0])), body);
+    };
     if (shape.name === 'box') collider(RAPIER.ColliderDesc.cuboid(a / 2, b / 2, c / 2));
     else if (shape.name === 'sphere') collider(RAPIER.ColliderDesc.ball(a));
     else if (shape.name === 'cylinder') collider(RAPIER.ColliderDesc.cylinder(b / 2, a));
@@ -165,11 +168,26 @@ function moments(shape) {
       collider(RAPIER.ColliderDesc.ball(a), [b, 0, 0]);
       collider(RAPIER.ColliderDesc.ball(a), [-b, 0, 0]);
     } else throw new Refused(`Rapier ${version} has no ${shape.name} shape`);
-    const m = arr(body.principalInertia());
-    return m.sort((x, y) => x - y);
+    return f(body);
   } finally {
     world.free();
   }
+}
+
+/** The principal moments Rapier computes for a shape of a given mass: principalInertia(). */
+function moments(shape) {
+  return withBody(shape, (body) => arr(body.principalInertia()).sort((x, y) => x - y));
+}
+
+/** What Rapier gives a body whose colliders carry no mass: RigidBody.mass() and principalInertia(). */
+function withoutMass(shape) {
+  const density = new RAPIER.ColliderDesc(new RAPIER.Ball(1)).density;
+  return withBody(shape, (body) => ({
+    mass: body.mass(),
+    moments: arr(body.principalInertia()),
+    said: `ColliderDesc's density ${density} unless set ("The mass and angular inertia tensor will be computed ` +
+      "automatically based on this density and the collider's shape\", ColliderDesc.setDensity); RigidBody.mass(), principalInertia()",
+  }));
 }
 
 await serveEngine(
@@ -183,4 +201,5 @@ await serveEngine(
   },
   (integrator, scenario) => new Run(integrator, scenario),
   moments,
+  withoutMass,
 );

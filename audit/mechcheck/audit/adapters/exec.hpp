@@ -138,6 +138,8 @@ struct handshake_fields {
   method_structure structure;
   bool decimal = false;  ///< "numbers": "decimal": the parent writes 17 significant digits
   bool shapes = false;   ///< an engine that answers "shape" requests
+  /// and "shape" requests without a mass (what the engine gives a body of the shape alone)
+  bool shapes_without_mass = false;
   /// An engine's "precision": the machine epsilon of the arithmetic it computes in
   /// ("double": 2^-52, the default; "single": 2^-23).
   double epsilon = 0x1p-52;

@@ -390,6 +390,25 @@ exec_engine_target exec_engine(const std::vector<std::string>& command, const ex
       });
       return m;
     };
+    if (h.shapes_without_mass)
+      shapes.without_mass = [s](const shape& sh) -> engine_default_mass {
+        const bool decimal = s->decimal;
+        const std::string what = "the mass and inertia of shape " + sh.name + " given without a mass";
+        const json reply =
+            exchange(*s, {{"op", "shape"}, {"shape", {{"name", sh.name}, {"size", vector_json(sh.size, decimal)}}}}, what);
+        if (const auto r = reply.find("refused"); r != reply.end())
+          throw scenario_refused("exec::" + s->name + ": " + error_text(*r));
+        engine_default_mass d;
+        checked(*s, what, [&] {
+          numbers_into(reply, "moments", 3, d.moments.data(), "the reply");
+          const auto mass = reply.find("mass");
+          if (mass == reply.end()) throw exec_error("the reply has no \"mass\": " + excerpt_json(reply));
+          d.mass = number_of(*mass, "the reply: mass");
+          d.said = text_of(reply, "said", "the reply", false);
+          return 0;
+        });
+        return d;
+      };
     target.shapes = std::move(shapes);
   }
   target.failures = [s] { return s->failures; };

@@ -609,4 +609,19 @@ Eigen::Vector3d exact_principal_moments(const shape& s) {
   return out;
 }
 
+double shape_volume(const shape& s) {
+  const mpfr50 a(s.size(0)), b(s.size(1)), c(s.size(2)), pi = boost::math::constants::pi<mpfr50>();
+  const mpfr50 ball = 4 * pi * a * a * a / 3;
+  mpfr50 v;
+  if (s.name == "box") v = a * b * c;
+  else if (s.name == "sphere") v = ball;
+  else if (s.name == "cylinder") v = pi * a * a * b;
+  else if (s.name == "capsule") v = pi * a * a * b + ball;
+  else if (s.name == "cone") v = pi * a * a * b / 3;
+  else if (s.name == "ellipsoid") v = 4 * pi * a * b * c / 3;
+  else if (s.name == "two_spheres") v = 2 * ball;  // apart: centres 2 d apart, d > r
+  else throw domain_error("shape_volume: no shape " + s.name);
+  return static_cast<double>(v);
+}
+
 }  // namespace mechcheck::audit

@@ -221,4 +221,7 @@ std::vector<shape> shapes();
 /// (and the parallel-axis theorem, eq 160, for the compound) in mpfr50.
 Eigen::Vector3d exact_principal_moments(const shape& s);
 
+/// A shape's volume (the compound's spheres apart), in mpfr50 rounded to double.
+double shape_volume(const shape& s);
+
 }  // namespace mechcheck::audit

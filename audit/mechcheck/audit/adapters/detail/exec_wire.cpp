@@ -194,7 +194,7 @@ exec_protocol::handshake_fields handshake_of(const json& h, std::string_view kin
                      std::string(kind) + "\"");
   if (kind == "engine")
     only_known_fields(h, {"protocol", "version", "kind", "name", "origin", "claims", "structure", "numbers", "shapes",
-                          "precision", "integrators"},
+                          "shapes_without_mass", "precision", "integrators"},
                       what);
   else if (kind == "dynamics")
     only_known_fields(h, {"protocol", "version", "kind", "name", "origin", "numbers", "quantities"}, what);
@@ -218,10 +218,13 @@ exec_protocol::handshake_fields handshake_of(const json& h, std::string_view kin
       throw exec_error(what + ": \"numbers\" must be \"hex\" or \"decimal\", got " + excerpt_json(*it));
     out.decimal = *it == "decimal";
   }
-  if (const auto it = h.find("shapes"); it != h.end()) {
-    if (!it->is_boolean()) throw exec_error(what + ": \"shapes\" must be true or false");
-    out.shapes = it->get<bool>();
-  }
+  for (const auto& [key, flag] : {std::pair{"shapes", &out.shapes}, std::pair{"shapes_without_mass", &out.shapes_without_mass}})
+    if (const auto it = h.find(key); it != h.end()) {
+      if (!it->is_boolean()) throw exec_error(what + ": \"" + key + "\" must be true or false");
+      *flag = it->get<bool>();
+    }
+  if (out.shapes_without_mass && !out.shapes)
+    throw exec_error(what + ": \"shapes_without_mass\" without \"shapes\": true (the same requests, one without a mass)");
   if (const auto it = h.find("precision"); it != h.end()) {
     if (*it != "double" && *it != "single")
       throw exec_error(what + ": \"precision\" must be \"double\" or \"single\", got " + excerpt_json(*it));
