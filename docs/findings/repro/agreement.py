@@ -55,11 +55,21 @@ def class_error(integrator, scenario, name, h, report):
     raise KeyError(f"{report}: {integrator} on {scenario} has no {name} point at h = {h}")
 
 
-def shape_error(engine_name, shape, report="engines/engines.json"):
+def shape_row(engine_name, shape, report, mass_given=True):
     for s in load(report)["shapes"]:
-        if s["engine"] == engine_name and s["shape"] == shape:
-            return s["relative_error"]
-    raise KeyError(f"engines.json: no shape {engine_name} {shape}")
+        if s["engine"] == engine_name and s["shape"] == shape and s.get("mass_given", True) == mass_given:
+            return s
+    raise KeyError(f"{report}: no shape {engine_name} {shape}" + ("" if mass_given else " without a mass"))
+
+
+def shape_error(engine_name, shape, report="engines/engines.json"):
+    return shape_row(engine_name, shape, report)["relative_error"]
+
+
+def alone(engine_name, report, key):
+    """The box given without a mass: the engine's mass, or its largest moment."""
+    row = shape_row(engine_name, "box", report, mass_given=False)
+    return row["mass"] if key == "mass" else max(row["measured"])
 
 
 def stepper(report, name, tier):
@@ -232,6 +242,29 @@ CHECKS = [
     ("odeint-sb3a", "SB3A's one-step order beyond double",
      lambda: repro("odeint_orders", "sb3a_local_order_cpp_bin_float_50"),
      lambda: problem("mpfr50/audit.json", "odeint::symplectic_rkn_sb3a_mclachlan", "mpfr50", "oscillator")["local_order"]["fit"]["value"], 0.05, False),
+    # A box given without a mass: the mass and largest moment each engine gives it, read by the
+    # same calls in both (Rapier's and Jolt's in float, printed to 7 digits: 1e-6); Havok's
+    # read-back held against its dynamics (a linear impulse of 1 changes v by 1/m).
+    *[(f"shape-alone-{name}", f"{name}: the mass of a box given without one",
+       (lambda program=program: repro(program, "box_alone_mass")),
+       (lambda engine_name=engine_name, report=report: alone(engine_name, report, "mass")), tol, tol > 0)
+      for name, program, engine_name, report, tol in [
+          ("rapier", "rapier_free_body", "exec::rapier", "engines-rapier/engines.json", 1e-6),
+          ("jolt", "jolt_gyroscopic", "exec::jolt", "engines-jolt/engines.json", 1e-6),
+          ("havok", "havok_free_body", "exec::havok", "engines-havok/engines.json", 1e-6),
+          ("mujoco_wasm", "mujoco_wasm_fullinertia", "exec::mujoco_wasm", "engines-wasm/engines.json", 1e-6),
+          ("cannon_es", "cannon_free_body", "exec::cannon_es", "engines-cannon/engines.json", 0)]],
+    *[(f"shape-alone-{name}", f"{name}: the largest moment of a box given without a mass",
+       (lambda program=program: repro(program, "box_alone_moment_max")),
+       (lambda engine_name=engine_name, report=report: alone(engine_name, report, "moment")), 1e-6, True)
+      for name, program, engine_name, report in [
+          ("rapier", "rapier_free_body", "exec::rapier", "engines-rapier/engines.json"),
+          ("jolt", "jolt_gyroscopic", "exec::jolt", "engines-jolt/engines.json"),
+          ("havok", "havok_free_body", "exec::havok", "engines-havok/engines.json"),
+          ("mujoco_wasm", "mujoco_wasm_fullinertia", "exec::mujoco_wasm", "engines-wasm/engines.json")]],
+    ("shape-alone-havok", "Havok: the mass its dynamics show for a box given without one (1 / dv of a unit impulse)",
+     lambda: 1 / repro("havok_free_body", "box_alone_impulse_dv"),
+     lambda: alone("exec::havok", "engines-havok/engines.json", "mass"), 1e-6, True),
     ("drivers-horizon", "rk8pd: error/tol after one period",
      lambda: repro("gsl_driver_horizon", "rk8pd_error_over_tol_after_1_periods"),
      lambda: horizon("gsl::driver_rk8pd", 1), 1e-3, True),

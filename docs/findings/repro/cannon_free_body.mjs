@@ -97,3 +97,10 @@ for (const n of [1024, 4096, 16384]) {
   b.addShape(new CANNON.Sphere(0.4));
   console.log(`sphere_over_exact ${(b.inertia.x / (0.4 * 2 * 0.16)).toFixed(6)}`);
 }
+// A Body given a box shape and no mass option: its mass and type.
+{
+  const b = new CANNON.Body();
+  b.addShape(new CANNON.Box(new CANNON.Vec3(0.15, 0.25, 0.35)));
+  console.log(`box_alone_mass ${b.mass}`);
+  console.log(`box_alone_static ${b.type === CANNON.Body.STATIC ? 1 : 0}`);
+}

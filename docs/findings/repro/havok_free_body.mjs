@@ -3,14 +3,16 @@
 // orientation, angular velocity (1, 0.2, 0.5) rad/s (Havok's angular velocity is world-frame), is stepped
 // with HP_World_Step. Printed: world angular momentum drift L = R diag(I) R^T w over 1e4 steps of 0.01,
 // world angular velocity drift, body angular velocity error at t = 5 after 512 steps vs an RK4 reference,
-// and an impulse check of whether the inertia argument of HP_Body_SetMassProperties is scaled by mass.
+// an impulse check of whether the inertia argument of HP_Body_SetMassProperties is scaled by mass, and
+// what a body given a box shape and no HP_Body_SetMassProperties gets (read back, and by impulses).
 // Run: node havok_free_body.mjs PATH/TO/node_modules/@babylonjs/havok
 // Output: lines "name value". Uses only Havok and plain JavaScript.
 import { readFileSync } from 'fs';
+import { pathToFileURL } from 'url';
 const dir = process.argv[2];
 if (!dir) { console.error('usage: node havok_free_body.mjs PATH/TO/node_modules/@babylonjs/havok'); process.exit(1); }
 const pkg = JSON.parse(readFileSync(dir + '/package.json', 'utf8'));
-const HavokPhysics = (await import(dir + '/lib/esm/HavokPhysics_es.js')).default;
+const HavokPhysics = (await import(pathToFileURL(dir + '/lib/esm/HavokPhysics_es.js').href)).default;
 const H = await HavokPhysics({ wasmBinary: readFileSync(dir + '/lib/esm/HavokPhysics.wasm') });
 const OK = H.Result.RESULT_OK;
 const ck = (r) => { const res = Array.isArray(r) ? r[0] : r; if (res !== OK) throw new Error('Havok call failed'); return Array.isArray(r) ? r[1] : r; };
@@ -117,4 +119,27 @@ function eulerRK4(W, T, n) {
   const [x, y, z, w] = ck(H.HP_Body_GetQTransform(body))[1], [a, b, d, e] = [-q0[0], -q0[1], -q0[2], q0[3]];
   const v = [w * a + x * e + y * d - z * b, w * b - x * d + y * e + z * a, w * d + x * b - y * a + z * e];
   console.log('frame_check_step_axis', v.map((t) => (t / norm(v)).toFixed(6)).join(','));
+}
+
+// A body given a shape and no mass properties: a box 0.3 x 0.5 x 0.7 (HP_Shape_BuildMassProperties
+// gives the box's mass at its density), a DYNAMIC body with that shape, added to a world. Read back
+// with HP_Body_GetMassProperties, and measured: a linear impulse of 1 changes v by 1/m, an angular
+// impulse (1, 1, 1) changes omega_i by 1/I_i (at the identity orientation).
+{
+  const world = ck(H.HP_World_Create());
+  ck(H.HP_World_SetGravity(world, [0, 0, 0]));
+  const box = ck(H.HP_Shape_CreateBox([0, 0, 0], [0, 0, 0, 1], [0.3, 0.5, 0.7]));
+  const body = ck(H.HP_Body_Create());
+  ck(H.HP_Body_SetShape(body, box));
+  ck(H.HP_Body_SetMotionType(body, H.MotionType.DYNAMIC));
+  ck(H.HP_World_AddBody(world, body, false));
+  const mp = ck(H.HP_Body_GetMassProperties(body));
+  console.log('box_alone_mass', mp[1]);
+  console.log('box_alone_inertia', mp[2].join(','));
+  console.log('box_alone_moment_max', mp[1] * Math.max(...mp[2])); // the inertia is per unit mass
+  console.log('box_built_mass', ck(H.HP_Shape_BuildMassProperties(box))[1].toFixed(6));
+  ck(H.HP_Body_ApplyImpulse(body, [0, 0, 0], [1, 0, 0]));
+  console.log('box_alone_impulse_dv', ck(H.HP_Body_GetLinearVelocity(body))[0]);
+  ck(H.HP_Body_ApplyAngularImpulse(body, [1, 1, 1]));
+  console.log('box_alone_angular_impulse_dw', ck(H.HP_Body_GetAngularVelocity(body)).join(','));
 }

@@ -149,3 +149,15 @@ console.log('major_axis_energy_t0_over_L2_2I2', f(mj.E0 / refMajor));
 console.log('major_axis_energy_t1000_over_L2_2I2', f(mj.Eat[100000] / refMajor));
 console.log('major_axis_energy_max_1e5_steps', f(mj.eMax));
 console.log('major_axis_momentum_magnitude_max_1e5_steps', f(mj.lMagMax));
+// A body given a shape and no mass properties: a box 0.3 x 0.5 x 0.7 (BoxShape takes half-extents;
+// convex radius 0), BodyCreationSettings' defaults. Exact for ConvexShape's density of 1000: mass 105,
+// largest moment 105 (0.5^2 + 0.7^2) / 12 = 6.475.
+{
+  const { jolt } = makeWorld(false);
+  const bcs = new Jolt.BodyCreationSettings(new Jolt.BoxShape(new Jolt.Vec3(0.15, 0.25, 0.35), 0), new Jolt.RVec3(0, 0, 0),
+    new Jolt.Quat(0, 0, 0, 1), Jolt.EMotionType_Dynamic, 0);
+  const body = jolt.GetPhysicsSystem().GetBodyInterface().CreateBody(bcs);
+  const motion = body.GetMotionProperties(), inv = motion.GetInverseInertiaDiagonal();
+  console.log('box_alone_mass', (1 / motion.GetInverseMass()).toExponential(6));
+  console.log('box_alone_moment_max', (1 / Math.min(inv.GetX(), inv.GetY(), inv.GetZ())).toExponential(6));
+}

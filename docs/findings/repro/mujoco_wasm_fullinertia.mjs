@@ -2,7 +2,8 @@
 // (fullinertia): the tensor the compiled model holds, R diag(body_inertia) R^T with R from
 // body_iquat, against the tensor given, and the mass matrix of a hinge about z through the
 // centre of mass, which is I_zz exactly. The setup of mujoco_fullinertia.c (Debian's MuJoCo
-// 2.2.2), in JavaScript; uses the package only.
+// 2.2.2), in JavaScript; uses the package only. And the mass and largest moment MuJoCo gives a
+// body whose box geom carries no mass (its density, 1000 unless set).
 //
 // Run: node mujoco_wasm_fullinertia.mjs PATH/TO/node_modules/@mujoco/mujoco/mujoco.js
 // Prints: lines "name value" (see ci/findings).
@@ -91,3 +92,13 @@ console.log(`random_tensors ${count}`);
 console.log(`random_largest_relative_error ${errors[count - 1].toExponential(3)}`);
 console.log(`random_median_relative_error ${errors[count / 2].toExponential(3)}`);
 console.log(`random_above_1e-12 ${errors.filter((e) => e > 1e-12).length}`);
+// A body whose box geom (0.3 x 0.5 x 0.7: half-sizes in MJCF) has no mass or density: exact for a
+// density of 1000, mass 105 and largest moment 105 (0.5^2 + 0.7^2) / 12 = 6.475.
+{
+  const box = mj.MjModel.from_xml_string(
+    '<mujoco><worldbody><body><freejoint/><geom type="box" size="0.15 0.25 0.35"/></body></worldbody></mujoco>',
+  );
+  console.log(`box_alone_mass ${box.body_mass[1].toExponential(6)}`);
+  console.log(`box_alone_moment_max ${Math.max(...box.body_inertia.subarray(3, 6)).toExponential(6)}`);
+  box.delete();
+}

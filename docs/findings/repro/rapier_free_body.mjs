@@ -6,7 +6,8 @@
 // rotated isotropic body), R from body.rotation(), W = R^T w (body frame), E = 1/2 W.I W, L = R I W (world).
 // Printed: a frame check of angvel(); |W - W_exact|/|W0| at t = 5 for n = 32 .. 32768 steps of 5/n, with log2 ratios,
 // against classical RK4 at h = 1e-4 (checked against 2e-4); the largest relative changes of E, |L| and vector L over
-// 1e4 and 1e5 steps of 0.01; E/(|L|^2/(2 I2)) at t = 0, 100, 1000; the same ratio for W0 = (0.2, 0.2, 1).
+// 1e4 and 1e5 steps of 0.01; E/(|L|^2/(2 I2)) at t = 0, 100, 1000; the same ratio for W0 = (0.2, 0.2, 1); the mass
+// and largest principal moment of a body given a box collider and no mass.
 // Run: node rapier_free_body.mjs PATH/TO/node_modules/@dimforge/rapier3d-compat
 // Output: lines "name value". Uses only Rapier and plain JavaScript.
 import { readFileSync } from 'fs';
@@ -126,3 +127,16 @@ for (const h of [0.02, 0.01, 0.005]) { // does the energy drift at t = 100 scale
   console.log(`free_top_energy_rel_change_t100_h${h}`, ((state(body).E - E0) / E0).toExponential(6));
 }
 longRun([0.2, 0.2, 1], 'major_axis');
+
+// A body given a collider and no mass: a box 0.3 x 0.5 x 0.7 (ColliderDesc.cuboid takes half-extents,
+// its density left as ColliderDesc makes it). Exact for a density of 1: mass 0.105, largest moment
+// 0.105 (0.5^2 + 0.7^2) / 12 = 6.475e-3.
+{
+  const world = new RAPIER.World({ x: 0, y: 0, z: 0 });
+  const body = world.createRigidBody(RAPIER.RigidBodyDesc.dynamic());
+  world.createCollider(RAPIER.ColliderDesc.cuboid(0.15, 0.25, 0.35), body);
+  const m = body.principalInertia();
+  console.log('box_alone_mass', body.mass().toExponential(6));
+  console.log('box_alone_moment_max', Math.max(m.x, m.y, m.z).toExponential(6));
+  world.free();
+}
