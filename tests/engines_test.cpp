@@ -601,6 +601,18 @@ TEST(engines, the_shape_audit_has_known_answers) {
     EXPECT_NEAR(a.relative_error, std::max(box_side / side - 1, box_axial / axial - 1), 16 * eps);
   }
   const auto all = audit::shapes();
+  // The convex hull, the tetrahedron (+-a, 0, c), (0, +-b, -c): C = (m/20) sum v v^T =
+  // m diag(a^2/10, b^2/10, c^2/5), I = tr(C) - C; its volume |det(v1 - v0, v2 - v0, v3 - v0)| / 6.
+  const auto& hull = *std::find_if(all.begin(), all.end(), [](const auto& s) { return s.name == "convex_hull"; });
+  {
+    const double a = hull.size(0), b = hull.size(1), c = hull.size(2), m = hull.mass;
+    Eigen::Vector3d expected(m * (b * b / 10 + c * c / 5), m * (a * a / 10 + c * c / 5), m * (a * a + b * b) / 10);
+    std::sort(expected.data(), expected.data() + 3);
+    EXPECT_LT((audit::exact_principal_moments(hull) - expected).cwiseQuotient(expected).cwiseAbs().maxCoeff(), 8 * eps);
+    Eigen::Matrix3d edges;
+    edges << -2 * a, -a, -a, 0, b, -b, 0, -2 * c, -2 * c;  // columns v1 - v0, v2 - v0, v3 - v0
+    EXPECT_NEAR(audit::shape_volume(hull), std::abs(edges.determinant()) / 6, 8 * eps * audit::shape_volume(hull));
+  }
   const auto& two = *std::find_if(all.begin(), all.end(), [](const auto& s) { return s.name == "two_spheres"; });
   const double r = two.size(0), d = two.size(1), m = two.mass;
   const Eigen::Vector3d expected(0.4 * m * r * r, 0.4 * m * r * r + m * d * d, 0.4 * m * r * r + m * d * d);

@@ -104,3 +104,18 @@ for (const n of [1024, 4096, 16384]) {
   console.log(`box_alone_mass ${b.mass}`);
   console.log(`box_alone_static ${b.type === CANNON.Body.STATIC ? 1 : 0}`);
 }
+// A ConvexPolyhedron: the tetrahedron (+-a, 0, c), (0, +-b, -c), a = 0.3, b = 0.4, c = 0.25, mass 2
+// (I = m diag(b^2/10 + c^2/5, a^2/10 + c^2/5, (a^2 + b^2)/10)), and the box that bounds it.
+{
+  const [a, b, c, m] = [0.3, 0.4, 0.25, 2];
+  const vertices = [[a, 0, c], [-a, 0, c], [0, b, -c], [0, -b, -c]].map(([x, y, z]) => new CANNON.Vec3(x, y, z));
+  const body = new CANNON.Body({ mass: m });
+  body.addShape(new CANNON.ConvexPolyhedron({ vertices, faces: [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]] }));
+  const exact = [m * (b * b / 10 + c * c / 5), m * (a * a / 10 + c * c / 5), m * (a * a + b * b) / 10];
+  const box = [(4 * b * b + 4 * c * c) * m / 12, (4 * a * a + 4 * c * c) * m / 12, (4 * a * a + 4 * b * b) * m / 12];
+  const got = [body.inertia.x, body.inertia.y, body.inertia.z];
+  // The moments compared in ascending order, each engine's axes being its own.
+  const up = (v) => [...v].sort((x, y) => x - y), [g, e] = [up(got), up(exact)];
+  console.log(`convex_hull_largest_relative_error ${Math.max(...g.map((x, i) => Math.abs(x / e[i] - 1))).toFixed(6)}`);
+  console.log(`convex_hull_over_bounding_box_largest ${Math.max(...got.map((x, i) => Math.abs(x / box[i] - 1))).toExponential(3)}`);
+}

@@ -143,3 +143,24 @@ function eulerRK4(W, T, n) {
   ck(H.HP_Body_ApplyAngularImpulse(body, [1, 1, 1]));
   console.log('box_alone_angular_impulse_dw', ck(H.HP_Body_GetAngularVelocity(body)).join(','));
 }
+
+// A convex hull: the tetrahedron (+-a, 0, c), (0, +-b, -c), a = 0.3, b = 0.4, c = 0.25 (its centroid
+// the origin, its principal axes x, y, z: I = m diag(b^2/10 + c^2/5, a^2/10 + c^2/5, (a^2 + b^2)/10),
+// volume 4abc/3), the points in the WebAssembly heap as the declarations ask, scaled by k: what
+// HP_Shape_BuildMassProperties gives against the exact moments (per unit mass) and against the mass
+// of the shape's density (HP_Shape_GetDensity) times the volume.
+for (const k of [1, 10, 100]) {
+  const [a, b, c] = [0.3 * k, 0.4 * k, 0.25 * k];
+  const points = [a, 0, c, -a, 0, c, 0, b, -c, 0, -b, -c];
+  const at = H._malloc(4 * points.length);
+  new Float32Array(H.HEAPU8.buffer, at, points.length).set(points);
+  const hull = ck(H.HP_Shape_CreateConvexHull(at, 4));
+  H._free(at);
+  const [, mass, inertia] = ck(H.HP_Shape_BuildMassProperties(hull));
+  const exact = [b * b / 10 + c * c / 5, a * a / 10 + c * c / 5, (a * a + b * b) / 10];
+  const up = (v) => [...v].sort((x, y) => x - y), [g, e] = [up(inertia), up(exact)]; // ascending, as the audit
+  const error = Math.max(...g.map((x, i) => Math.abs(x / e[i] - 1)));
+  console.log(`convex_hull_x${k}_moment_largest_relative_error`, error.toExponential(6));
+  console.log(`convex_hull_x${k}_mass_over_density_volume_minus_1`,
+              (mass / (ck(H.HP_Shape_GetDensity(hull)) * (4 * a * b * c) / 3) - 1).toExponential(6));
+}

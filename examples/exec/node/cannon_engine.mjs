@@ -17,7 +17,7 @@
 import * as CANNON from 'cannon-es';
 import { readFileSync } from 'node:fs';
 import { chainLinks, oneBodyStart, quaternionOf, sub } from './bodies.mjs';
-import { Refused, frame, scenarioOf, serveEngine } from './protocol.mjs';
+import { Refused, frame, hullPoints, scenarioOf, serveEngine } from './protocol.mjs';
 
 const version = JSON.parse(readFileSync(new URL('./node_modules/cannon-es/package.json', import.meta.url))).version;
 
@@ -159,7 +159,10 @@ function bodyOf(shape) {
   else if (shape.name === 'two_spheres') {
     body.addShape(new CANNON.Sphere(a), v3([b, 0, 0]));
     body.addShape(new CANNON.Sphere(a), v3([-b, 0, 0]));
-  } else if (shape.name === 'cone')
+  } else if (shape.name === 'convex_hull')
+    // The tetrahedron's faces, each counter-clockwise seen from outside.
+    body.addShape(new CANNON.ConvexPolyhedron({ vertices: hullPoints(shape).map(v3), faces: [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]] }));
+  else if (shape.name === 'cone')
     // A Cylinder with radiusTop 0 is centred at its bounding box's centre, not at a cone's
     // centre of mass: not the audit's cone.
     throw new Refused(`cannon-es ${version} has no cone shape`);

@@ -20,7 +20,7 @@
 import HavokPhysics from '@babylonjs/havok';
 import { readFileSync } from 'node:fs';
 import { chainLinks, oneBodyStart, quaternionOf, rotate, sub } from './bodies.mjs';
-import { Refused, frame, scenarioOf, serveEngine } from './protocol.mjs';
+import { Refused, frame, hullPoints, scenarioOf, serveEngine } from './protocol.mjs';
 
 const root = new URL('./node_modules/@babylonjs/havok/', import.meta.url);
 const HK = await HavokPhysics({ wasmBinary: readFileSync(new URL('lib/esm/HavokPhysics.wasm', root)) });
@@ -172,6 +172,16 @@ function shapeOf(shape) {
       ok('HP_Shape_AddChild', HK.HP_Shape_AddChild(sh, ball, [[x, 0, 0], [0, 0, 0, 1], [1, 1, 1]]));
     }
     return sh;
+  }
+  if (shape.name === 'convex_hull') {
+    // The points in the WebAssembly heap, as the declarations ask ("allocated using `_malloc`").
+    const points = hullPoints(shape).flat(), at = HK._malloc(4 * points.length);
+    try {
+      new Float32Array(HK.HEAPU8.buffer, at, points.length).set(points);
+      return ok('HP_Shape_CreateConvexHull', HK.HP_Shape_CreateConvexHull(at, points.length / 3));
+    } finally {
+      HK._free(at);
+    }
   }
   throw new Refused(`this client builds no ${shape.name} in Havok ${version}`);
 }

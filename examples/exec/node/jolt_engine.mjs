@@ -24,7 +24,7 @@
 import initJolt from 'jolt-physics/wasm-compat';
 import { readFileSync } from 'node:fs';
 import { chainLinks, oneBodyStart, quaternionOf, rotate, sub } from './bodies.mjs';
-import { Refused, frame, scenarioOf, serveEngine } from './protocol.mjs';
+import { Refused, frame, hullPoints, scenarioOf, serveEngine } from './protocol.mjs';
 
 const Jolt = await initJolt();
 const version = JSON.parse(readFileSync(new URL('./node_modules/jolt-physics/package.json', import.meta.url))).version;
@@ -222,8 +222,16 @@ class Run {
   }
 }
 
-/** A shape in Jolt: its axis (y) for the cylinder and the capsule is the audit's z; convex
- * radius 0 where a shape takes one. The shapes are reference-counted by Jolt and left to the
+/** The shape of ShapeSettings, or Jolt's error. */
+function created(settings) {
+  const result = settings.Create();
+  if (result.HasError()) throw new Error(`Jolt ${version}: ${result.GetError().c_str()}`);
+  return result.Get();
+}
+
+/** A shape in Jolt: its axis (y) for the cylinder, the capsule and the cone (a tapered
+ * cylinder) is the audit's z; convex radius 0 where a shape takes one (a hull's too: Jolt's
+ * default rounds its corners). The shapes are reference-counted by Jolt and left to the
  * child's exit (a few per audit). */
 function shapeOf(shape) {
   const [a, b, c] = shape.size;
@@ -231,14 +239,20 @@ function shapeOf(shape) {
   if (shape.name === 'sphere') return new Jolt.SphereShape(a);
   if (shape.name === 'cylinder') return new Jolt.CylinderShape(b / 2, a, 0);
   if (shape.name === 'capsule') return new Jolt.CapsuleShape(b / 2, a);
+  // A tapered cylinder of top radius 0: the cone, its centre of mass h/4 above the base.
+  if (shape.name === 'cone') return created(new Jolt.TaperedCylinderShapeSettings(b / 2, 0, a, 0));
+  if (shape.name === 'convex_hull') {
+    const hull = new Jolt.ConvexHullShapeSettings();
+    for (const p of hullPoints(shape)) hull.mPoints.push_back(new Jolt.Vec3(...p));
+    hull.mMaxConvexRadius = 0;
+    return created(hull);
+  }
   if (shape.name === 'two_spheres') {
     const compound = new Jolt.StaticCompoundShapeSettings();
     const ball = new Jolt.SphereShapeSettings(a);
     compound.AddShape(new Jolt.Vec3(b, 0, 0), new Jolt.Quat(0, 0, 0, 1), ball, 0);
     compound.AddShape(new Jolt.Vec3(-b, 0, 0), new Jolt.Quat(0, 0, 0, 1), ball, 0);
-    const result = compound.Create();
-    if (result.HasError()) throw new Error(`Jolt ${version}: ${result.GetError().c_str()}`);
-    return result.Get();
+    return created(compound);
   }
   throw new Refused(`this client builds no ${shape.name} in Jolt ${version}`);
 }

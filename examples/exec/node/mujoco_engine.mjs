@@ -16,7 +16,7 @@
 // each step -- what a callback would give to a method that evaluates forces once a step
 // (Euler, implicit, implicitfast), not to RK4's four stages: refused there.
 import loadMujoco from '@mujoco/mujoco';
-import { Refused, frame, scenarioOf, serveEngine } from './protocol.mjs';
+import { Refused, frame, hullPoints, scenarioOf, serveEngine } from './protocol.mjs';
 
 const mj = await loadMujoco();
 const version = mj.mj_versionString();
@@ -271,9 +271,11 @@ function withModel(shape, f) {
     two_spheres:
       `<geom type="sphere" size="${text(a)}" pos="${text(b)} 0 0"${mass(shape.mass / 2)}/>` +
       `<geom type="sphere" size="${text(a)}" pos="${text(-b)} 0 0"${mass(shape.mass / 2)}/>`,
+    convex_hull: `<geom type="mesh" mesh="hull"${mass(shape.mass)}/>`,
   }[shape.name];
   if (!geoms) throw new Refused(`MuJoCo ${version} has no ${shape.name} geom`);
-  const model = mj.MjModel.from_xml_string(`<mujoco><worldbody><body><freejoint/>${geoms}</body></worldbody></mujoco>`);
+  const asset = shape.name === 'convex_hull' ? `<asset><mesh name="hull" vertex="${vec(hullPoints(shape).flat())}"/></asset>` : '';
+  const model = mj.MjModel.from_xml_string(`<mujoco>${asset}<worldbody><body><freejoint/>${geoms}</body></worldbody></mujoco>`);
   try {
     return f(model);
   } finally {

@@ -12,6 +12,11 @@
 // size}) with no mass properties: {mass, moments, said}, said how the engine got them.
 import readline from 'node:readline';
 
+/** The points of the shape convex_hull of size (a, b, c): (+-a, 0, c) and (0, +-b, -c). */
+export function hullPoints({ size: [a, b, c] }) {
+  return [[a, 0, c], [-a, 0, c], [0, b, -c], [0, -b, -c]];
+}
+
 /** A scenario the engine cannot express: the audit lists it as refused, with these words. */
 export class Refused extends Error {}
 

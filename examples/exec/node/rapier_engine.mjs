@@ -21,7 +21,7 @@
 import RAPIER from '@dimforge/rapier3d-compat';
 import { readFileSync } from 'node:fs';
 import { chainLinks, oneBodyStart, quaternionOf, sub } from './bodies.mjs';
-import { Refused, frame, scenarioOf, serveEngine } from './protocol.mjs';
+import { Refused, frame, hullPoints, scenarioOf, serveEngine } from './protocol.mjs';
 
 await RAPIER.init();
 const version = JSON.parse(readFileSync(new URL('./node_modules/@dimforge/rapier3d-compat/package.json', import.meta.url))).version;
@@ -167,7 +167,8 @@ function withBody(shape, f) {
     else if (shape.name === 'two_spheres') {
       collider(RAPIER.ColliderDesc.ball(a), [b, 0, 0]);
       collider(RAPIER.ColliderDesc.ball(a), [-b, 0, 0]);
-    } else throw new Refused(`Rapier ${version} has no ${shape.name} shape`);
+    } else if (shape.name === 'convex_hull') collider(RAPIER.ColliderDesc.convexHull(new Float32Array(hullPoints(shape).flat())));
+    else throw new Refused(`Rapier ${version} has no ${shape.name} shape`);
     return f(body);
   } finally {
     world.free();

@@ -420,7 +420,7 @@ engine_shapes shapes() {
   engine_shapes e;
   e.engine = "bullet";
   e.origin = "Bullet " + version() + ": btCollisionShape::calculateLocalInertia of btBoxShape, btSphereShape, "
-             "btCylinderShapeZ, btCapsuleShapeZ, btConeShapeZ and a btCompoundShape of two spheres";
+             "btCylinderShapeZ, btCapsuleShapeZ, btConeShapeZ, a btCompoundShape of two spheres and a btConvexHullShape";
   e.moments = [](const shape& s) -> Eigen::Vector3d {
     const double* z = s.size.data();
     std::unique_ptr<btCollisionShape> shape;
@@ -444,6 +444,12 @@ engine_shapes shapes() {
       at.setOrigin(btVector3(-z[1], 0, 0));
       compound->addChildShape(at, &ball);
       shape = std::move(compound);
+    } else if (s.name == "convex_hull") {
+      auto hull = std::make_unique<btConvexHullShape>();
+      for (const btVector3& p : {btVector3(z[0], 0, z[2]), btVector3(-z[0], 0, z[2]), btVector3(0, z[1], -z[2]),
+                                 btVector3(0, -z[1], -z[2])})
+        hull->addPoint(p);
+      shape = std::move(hull);
     } else
       throw scenario_refused("bullet: Bullet 3.24 has no " + s.name + " shape (btMultiSphereShape approximates one)");
     btVector3 inertia(0, 0, 0);

@@ -391,7 +391,7 @@ engine_shapes shapes() {
   e.origin = "MuJoCo " + version() + ": a body without <inertial> whose geoms carry the mass (inertiafromgeom); "
              "mjModel::body_inertia after mj_loadXML";
   e.moments = [](const shape& s) -> Eigen::Vector3d {
-    char geoms[512];
+    char geoms[512], asset[512] = "";
     const double* z = s.size.data();
     if (s.name == "box")
       std::snprintf(geoms, sizeof geoms, "<geom type=\"box\" size=\"%.17g %.17g %.17g\" mass=\"%.17g\"/>", z[0] / 2,
@@ -409,9 +409,14 @@ engine_shapes shapes() {
                     "<geom type=\"sphere\" size=\"%.17g\" pos=\"%.17g 0 0\" mass=\"%.17g\"/>"
                     "<geom type=\"sphere\" size=\"%.17g\" pos=\"%.17g 0 0\" mass=\"%.17g\"/>",
                     z[0], z[1], s.mass / 2, z[0], -z[1], s.mass / 2);
-    else
+    else if (s.name == "convex_hull") {  // a mesh of the hull's points (MuJoCo keeps them as float)
+      std::snprintf(asset, sizeof asset,
+                    "<asset><mesh name=\"hull\" vertex=\"%.17g 0 %.17g %.17g 0 %.17g 0 %.17g %.17g 0 %.17g %.17g\"/></asset>",
+                    z[0], z[2], -z[0], z[2], z[1], -z[2], -z[1], -z[2]);
+      std::snprintf(geoms, sizeof geoms, "<geom type=\"mesh\" mesh=\"hull\" mass=\"%.17g\"/>", s.mass);
+    } else
       throw scenario_refused("mujoco: MuJoCo 2.2.2 has no " + s.name + " geom");
-    mjModel* m = load(std::string("<mujoco><worldbody><body><freejoint/>") + geoms + "</body></worldbody></mujoco>");
+    mjModel* m = load(std::string("<mujoco>") + asset + "<worldbody><body><freejoint/>" + geoms + "</body></worldbody></mujoco>");
     const Eigen::Vector3d out(m->body_inertia[3], m->body_inertia[4], m->body_inertia[5]);
     mj_deleteModel(m);
     return out;

@@ -4,6 +4,7 @@
 #include "mechcheck/audit/problems/scenarios.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -576,9 +577,18 @@ std::vector<shape> shapes() {
   return {
       {"box", 2, {0.3, 0.5, 0.7}},     {"sphere", 2, {0.4, 0, 0}},        {"cylinder", 2, {0.2, 0.9, 0}},
       {"capsule", 2, {0.2, 0.6, 0}},   {"cone", 2, {0.3, 0.8, 0}},        {"ellipsoid", 2, {0.2, 0.3, 0.5}},
-      {"two_spheres", 2, {0.1, 0.4, 0}},
+      {"two_spheres", 2, {0.1, 0.4, 0}}, {"convex_hull", 2, {0.3, 0.4, 0.25}},
   };
 }
+
+namespace {
+/// The convex hull's points: (+-a, 0, c) and (0, +-b, -c), a tetrahedron of volume 4abc/3.
+std::array<vector3<mpfr50>, 4> hull_vertices(const mpfr50& a, const mpfr50& b, const mpfr50& c) {
+  const mpfr50 zero(0);
+  return {vector3<mpfr50>(a, zero, c), vector3<mpfr50>(-a, zero, c), vector3<mpfr50>(zero, b, -c),
+          vector3<mpfr50>(zero, -b, -c)};
+}
+}  // namespace
 
 Eigen::Vector3d exact_principal_moments(const shape& s) {
   const mpfr50 m(s.mass), a(s.size(0)), b(s.size(1)), c(s.size(2));
@@ -600,6 +610,10 @@ Eigen::Vector3d exact_principal_moments(const shape& s) {
     const mpfr50 half = m / 2;
     const vector3<mpfr50> offset(b, mpfr50(0), mpfr50(0));
     inertia = 2 * reference::solid_sphere_inertia(half, a) + 2 * parallel_axis_term(half, offset);
+  } else if (s.name == "convex_hull") {
+    // The tetrahedron of hull_vertices: its centroid the origin, its products of inertia 0
+    // (symmetric under x -> -x and under y -> -y).
+    inertia = reference::tetrahedron_inertia(m, hull_vertices(a, b, c));
   } else {
     throw domain_error("exact_principal_moments: no shape " + s.name);
   }
@@ -620,6 +634,7 @@ double shape_volume(const shape& s) {
   else if (s.name == "cone") v = pi * a * a * b / 3;
   else if (s.name == "ellipsoid") v = 4 * pi * a * b * c / 3;
   else if (s.name == "two_spheres") v = 2 * ball;  // apart: centres 2 d apart, d > r
+  else if (s.name == "convex_hull") v = 4 * a * b * c / 3;
   else throw domain_error("shape_volume: no shape " + s.name);
   return static_cast<double>(v);
 }

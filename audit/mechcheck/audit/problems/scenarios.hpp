@@ -207,10 +207,11 @@ std::vector<body_frame> chain_frames(const scenario& s, const Eigen::VectorXd& a
 /// A uniform solid, centred at the body origin, its axis (cylinder, capsule, cone) along z;
 /// or a compound body: two solid spheres of radius r and mass m/2 centred at (+-d, 0, 0).
 struct shape {
-  std::string name;  ///< box, sphere, cylinder, capsule, cone, ellipsoid, two_spheres
+  std::string name;  ///< box, sphere, cylinder, capsule, cone, ellipsoid, two_spheres, convex_hull
   double mass = 1;
   /// box: edges; sphere: (r); cylinder, cone: (r, height); capsule: (r, length of its
-  /// cylinder); ellipsoid: semi-axes; two_spheres: (r, d).
+  /// cylinder); ellipsoid: semi-axes; two_spheres: (r, d); convex_hull: (a, b, c), the hull
+  /// of the points (+-a, 0, c) and (0, +-b, -c) (a tetrahedron, centroid at the origin).
   Eigen::Vector3d size{0, 0, 0};
 };
 
