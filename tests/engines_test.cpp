@@ -35,6 +35,7 @@ enum class method {
   rotations,
   damped,
   rk4_world_turn,  ///< RK4 with the body rates taken as world ones in q' (a wrong orientation update)
+  coarse,          ///< symplectic Euler, its state rounded to multiples of 2^-16 after each step
 };
 
 /// A reference engine: the scenario's equations of motion stepped by RK4, explicit Euler
@@ -94,10 +95,12 @@ class reference_run final : public audit::engine_run {
       rotate(0, h / 2);
       return;
     }
-    if (method_ == method::symplectic_euler || method_ == method::damped) {  // p first, then q with the new p
-      y_(1) += h * f(y_)(1);
+    if (method_ == method::symplectic_euler || method_ == method::damped || method_ == method::coarse) {
+      y_(1) += h * f(y_)(1);  // p first, then q with the new p
       y_(0) += h * y_(1);
       if (method_ == method::damped) y_(1) *= std::exp(-damping * h);  // det = exp(-damping h) < 1
+      // An engine whose arithmetic is coarser than the double it says (a state kept in 16 bits)
+      if (method_ == method::coarse) y_ = (y_ * 0x1p16).array().round() * 0x1p-16;
       return;
     }
     if (method_ == method::verlet) {  // half kick, drift, half kick: symmetric
@@ -149,7 +152,7 @@ audit::engine_integrator reference_engine(const std::string& name, method m, dou
   e.name = name;
   e.declared.order = declared;
   e.start = [m, sign](const audit::scenario& s) -> std::unique_ptr<audit::engine_run> {
-    if ((m == method::symplectic_euler || m == method::verlet || m == method::damped) &&
+    if ((m == method::symplectic_euler || m == method::verlet || m == method::damped || m == method::coarse) &&
         s.joint != audit::joint_kind::hinge_y)
       throw audit::scenario_refused("reference engine: symplectic Euler on the pendulum only");
     return std::make_unique<reference_run>(s, m, sign);
@@ -498,6 +501,18 @@ TEST(engines, the_jacobian_study_has_known_answers) {
     EXPECT_NEAR(*sc.det_minus_one, std::expm1(-damping * s.h_long), sc.det_resolution) << sc.scenario;
   }
   EXPECT_EQ(d.symplectic.result, outcome::contradicted) << d.symplectic.evidence;
+  // A Jacobian that ran and resolved nothing (the state rounded to 2^-16 = 1.5e-5 a step, the
+  // engine saying double): declared symplectic, not resolvable, with what it needs.
+  auto coarse = reference_engine("reference::CoarseSymplecticEuler", method::coarse, 1, 1);
+  coarse.declared.symplectic = true;
+  const auto c = audit::audit_engine(coarse, opt);
+  for (const auto& sc : c.scenarios) {
+    ASSERT_TRUE(sc.det_minus_one) << sc.scenario << ": " << sc.long_run_failure;
+    EXPECT_GT(sc.det_resolution, 1e-6) << sc.scenario;
+  }
+  EXPECT_EQ(c.symplectic.result, outcome::not_resolvable) << c.symplectic.evidence;
+  EXPECT_EQ(c.symplectic.measured, "not resolved");
+  EXPECT_NE(c.symplectic.needs.find("a Jacobian resolved to 1e-06 or better"), std::string::npos) << c.symplectic.needs;
   // Nothing declared: the defect is reported, the verdict says nothing was declared.
   euler.declared.symplectic.reset();
   const auto u = audit::audit_engine(euler, opt);
