@@ -520,6 +520,33 @@ TEST(engines, the_jacobian_study_has_known_answers) {
   EXPECT_EQ(u.symplectic.measured, "no (a defect above the resolution)");
 }
 
+TEST(engines, a_pendulums_energy_error_is_relative_to_the_energy_it_exchanges) {
+  // The potential's floors by their closed forms: the pendulum's bob 1 m below its pivot,
+  // -m g; the double pendulum's two bars of 1 kg and 1 m hanging straight down, centres at
+  // -0.5 and -1.5: -2 m g. Free bodies and the projectile have none.
+  const auto all = audit::scenarios();
+  EXPECT_NEAR(*audit::potential_floor(named(all, "pendulum_small")), -9.81, 4e-15 * 9.81);
+  EXPECT_NEAR(*audit::potential_floor(named(all, "double_pendulum")), -2 * 9.81, 4e-15 * 19.62);
+  EXPECT_FALSE(audit::potential_floor(named(all, "free_top")));
+  EXPECT_FALSE(audit::potential_floor(named(all, "projectile")));
+  // A step that damps the swing (the rate times exp(-0.5 h)): over t = 30 the swing keeps
+  // exp(-15) of its energy, so the error relative to the swing's energy m g l (1 - cos 0.1)
+  // is 1 - exp(-15) to the long run's first order; relative to |E0| = m g l cos 0.1 it
+  // would read 5.0e-3.
+  audit::engine_options opt;
+  opt.scenarios = {"pendulum_small"};
+  opt.long_run_steps = 3000;
+  opt.max_study_steps = 64;
+  const auto d = audit::audit_engine(reference_engine("reference::DampedSymplecticEuler", method::damped, 1, 1), opt);
+  ASSERT_TRUE(d.scenarios.at(0).long_run_failure.empty()) << d.scenarios.at(0).long_run_failure;
+  EXPECT_NEAR(d.scenarios.at(0).energy_max, 1, 1e-3);
+  // Symplectic Euler keeps it: bounded, its modified energy's offset h p F(q) / 2 at most
+  // h w0 = 0.031 of the swing's energy to first order.
+  const auto k = audit::audit_engine(reference_engine("reference::SymplecticEuler", method::symplectic_euler, 1, 1), opt);
+  EXPECT_EQ(k.scenarios.at(0).energy_class, "bounded") << k.scenarios.at(0).energy_max;
+  EXPECT_LT(k.scenarios.at(0).energy_max, 0.05);
+}
+
 TEST(engines, the_reversal_study_has_known_answers) {
   // h then -h: Stormer-Verlet returns to its start to rounding; explicit Euler misses it
   // by O(h^2) (the defect falls by 4 when h halves).

@@ -246,12 +246,15 @@ double engine_rounding_budget(double u, double n) { return 64 * u * std::sqrt(st
 
 /// The growth class of a long run's relative error (classify_growth) with the scenario's
 /// time scale and the engine's rounding budget as the floor of each window.
-growth_class growth_of(const growth_recorder& g, const scenario& s, long long steps, double u) {
+/// `magnification` is the rounding's scale over the invariant's (the energy's terms against
+/// the energy a pendulum exchanges: 1 where the invariant is its own scale).
+growth_class growth_of(const growth_recorder& g, const scenario& s, long long steps, double u,
+                       double magnification = 1) {
   const std::vector<double> steps_w = g.window_steps();
   std::vector<double> time(steps_w.size()), floor(steps_w.size());
   for (std::size_t w = 0; w < steps_w.size(); ++w) {
     time[w] = steps_w[w] * s.h_long;
-    floor[w] = engine_rounding_budget(u, steps_w[w]);
+    floor[w] = magnification * engine_rounding_budget(u, steps_w[w]);
   }
   return classify_growth(time, g.window_rms(), floor, s.time_scale, static_cast<double>(steps) * s.h_long);
 }
@@ -271,7 +274,13 @@ void run_long(const engine_integrator& in, const scenario& s, const engine_optio
   auto e = in.start(s);
   const engine_observation o0 = observe(s, e->read());
   constraint_violation worst;
-  const double e_scale = std::abs(o0.energy) > 0 ? std::abs(o0.energy) : 1.0;
+  // The energy error relative to the energy the motion exchanges (E0 above the potential's
+  // floor) where the scenario has one, else to |E0|; its rounding, of the energy's terms
+  // (|E0| and the exchange at most), magnified by their ratio to it.
+  const std::optional<double> v_floor = potential_floor(s);
+  const double exchanged = v_floor ? o0.energy - *v_floor : 0;
+  const double e_scale = exchanged > 0 ? exchanged : std::abs(o0.energy) > 0 ? std::abs(o0.energy) : 1.0;
+  const double e_magnification = exchanged > 0 ? (std::abs(o0.energy) + exchanged) / exchanged : 1.0;
   const double l_scale = o0.momentum.norm() > 0 ? o0.momentum.norm() : 1.0;
   const bool momentum_kept = s.momentum != scenario::momentum_law::none;
   // The run in three thirds, each timed apart (the cost is the median third's).
@@ -313,7 +322,7 @@ void run_long(const engine_integrator& in, const scenario& s, const engine_optio
     a.seconds_per_step = third[1];
   }
   if (s.conserves_energy) {
-    const growth_class c = growth_of(energy, s, a.long_run_steps, in.epsilon);
+    const growth_class c = growth_of(energy, s, a.long_run_steps, in.epsilon, e_magnification);
     a.energy_growth = c.exponent;
     a.energy_class = c.kind;
     a.energy_max = energy.max_error();

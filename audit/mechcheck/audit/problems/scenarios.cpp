@@ -511,6 +511,23 @@ double wrap_angle(double a) { return std::remainder(a, 2 * std::acos(-1.0)); }
 
 double hinge_inertia(const scenario& s) { return s.mass * s.com.squaredNorm() + s.inertia(1); }
 
+std::optional<double> potential_floor(const scenario& s) {
+  if (!(s.gravity > 0)) return std::nullopt;
+  if (s.structure == body_structure::one_body) {
+    if (s.joint == joint_kind::free) return std::nullopt;
+    return -s.mass * s.gravity * s.com.norm();  // the pivot at the origin
+  }
+  if (s.structure != body_structure::chain || s.links.empty()) return std::nullopt;
+  // Link k's hinge is at most the sum of the hinge offsets above it below link 0's (fixed)
+  // hinge, and its centre of mass at most its arm below that.
+  double floor = 0, hinge_z = s.links.front().hinge(2);
+  for (std::size_t k = 0; k < s.links.size(); ++k) {
+    if (k > 0) hinge_z -= s.links[k].hinge.norm();
+    floor += s.links[k].mass * s.gravity * (hinge_z - s.links[k].com.norm());
+  }
+  return floor;
+}
+
 scenario with_hinge_state(scenario s, double theta, double thetadot) {
   if (s.joint != joint_kind::hinge_y) throw domain_error("with_hinge_state: " + s.name + " has no hinge");
   if (!std::isfinite(theta) || !std::isfinite(thetadot))

@@ -193,6 +193,16 @@ double wrap_angle(double a);
 /// Moment of inertia of a hinge scenario's body about its hinge: m |com|^2 + I_yy.
 double hinge_inertia(const scenario& s);
 
+/// A lower bound of the gravitational potential sum m g z over every configuration the
+/// joints allow, for a jointed scenario under gravity: a body on a pivot at the origin,
+/// -m g |com|; a chain, each link's centre of mass at most the lengths of the links above
+/// it and its own arm below the first hinge (hanging straight down: the bound is reached by
+/// an open chain of bars, not by a closed loop). None for a free body, the robots or no
+/// gravity. E0 minus it is the energy the motion can exchange: the engines' long runs
+/// report their energy error relative to that, not to |E0|, whose potential has an
+/// arbitrary zero (a pendulum's swing at 0.1 rad is 0.5 % of |E0| = m g l cos 0.1).
+std::optional<double> potential_floor(const scenario& s);
+
 /// A body's frame: orientation (body to world), centre of mass position and velocity,
 /// angular velocity in the world frame.
 struct body_frame {
