@@ -389,6 +389,12 @@ TEST(exec, an_engine_child_gives_its_shapes_inertia_with_and_without_a_mass) {
     }
     EXPECT_EQ(t.failures(), 0) << t.last_failure();
   }
+  // The handshake's flag needs "shapes" and a boolean.
+  namespace ep = audit::exec_protocol;
+  const std::string head = R"({"protocol": "mechcheck", "version": 1, "kind": "engine", "name": "e", "integrators": [{"name": "i"}], )";
+  EXPECT_TRUE(ep::parse_handshake(head + R"("shapes": true, "shapes_without_mass": true})", "engine").shapes_without_mass);
+  EXPECT_THROW(ep::parse_handshake(head + R"("shapes_without_mass": true})", "engine"), audit::exec_error);
+  EXPECT_THROW(ep::parse_handshake(head + R"("shapes": true, "shapes_without_mass": 1})", "engine"), audit::exec_error);
   // A reply without its mass is the row's failure, and the next request is answered.
   const auto broken = audit::exec_engine(child("engine_broken"));
   const auto rows = audit::audit_shapes(*broken.shapes);
