@@ -269,6 +269,24 @@ CHECKS = [
      lambda: repro("havok_free_body", "pendulum_small_h0.01_swing_energy_lost_max"),
      lambda: engine_scenario("exec::havok::step", "pendulum_small", "engines-havok/engines.json")["energy_max"],
      1e-5, True),
+    # Rapier's and Jolt's solver iterations on pendulum_large: the same setup stepped the same
+    # way in both, the reproducer's numbers printed to 7 digits: 1e-6.
+    *[(f"{name}-iterations", f"{name}: pendulum_large's {what} over 10^5 steps, {setting}",
+       (lambda program=program, key=key: repro(program, key)),
+       (lambda integrator=integrator, report=report, field=field:
+        engine_scenario(integrator, "pendulum_large", report)["constraint_max"]["position"] if field == "anchor"
+        else engine_scenario(integrator, "pendulum_large", report)["energy_max"]), 1e-6, True)
+      for name, program, report, setting, integrator, prefix in [
+          ("rapier", "rapier_pendulum", "pendulum-rapier/engines.json", "4 iterations",
+           "exec::rapier::impulse_joints", "pendulum_large_iterations_4"),
+          ("rapier", "rapier_pendulum", "pendulum-rapier/engines.json", "16 iterations",
+           "exec::rapier::impulse_joints_16_iterations", "pendulum_large_iterations_16"),
+          ("jolt", "jolt_pendulum", "pendulum-jolt/engines.json", "2 position steps",
+           "exec::jolt::default", "pendulum_large_position_steps_2"),
+          ("jolt", "jolt_pendulum", "pendulum-jolt/engines.json", "8 position steps",
+           "exec::jolt::position_steps_8", "pendulum_large_position_steps_8")]
+      for what, field, key in [("largest anchor separation", "anchor", prefix + "_anchor_max"),
+                               ("largest energy error", "energy", prefix + "_energy_max")]],
     ("havok-convex-hull", "Havok 1.3.14: a convex hull's moments (the tetrahedron), largest relative error",
      lambda: repro("havok_free_body", "convex_hull_x1_moment_largest_relative_error"),
      lambda: shape_error("exec::havok", "convex_hull", "engines-havok/engines.json"), 1e-5, True),
