@@ -41,8 +41,10 @@ function rotationOf({ x, y, z, w }) {
 // joints' solver iterations (World.numSolverIterations, rapier's world.d.ts: "The number of
 // solver iterations run by the constraints solver for calculating forces (default: `4`)",
 // "The greater this value is, the most rigid and realistic the physics simulation will
-// be"). A free body's step does not read it. The others set nothing the scenarios use
-// (contacts, continuous collision detection, soft bodies).
+// be"). It is also the number of substeps a step is cut into, free bodies' included
+// (rapier's source: `params.dt /= num_solver_iterations`), which the free bodies' reports
+// show. The others set nothing the scenarios use (contacts, continuous collision detection,
+// soft bodies).
 const integrators = [
   {
     name: 'impulse_joints',
