@@ -102,14 +102,15 @@ void print_engines(std::ostream& out, const std::vector<engine_audit>& audits, c
         out << "  " << v->claim << ": declared " << v->declared << ", measured " << v->measured << ": "
             << outcome_name(v->result) << " (" << clip(v->evidence) << ")\n";
   }
-  for (const auto& a : shapes)
-    if (a.mass_given || a.refused.empty())  // a shape not offered is said once
+  for (const auto& a : shapes) {
+    if (!a.mass_given && !a.refused.empty()) continue;  // a shape not offered is said once
     out << "inertia " << a.engine << " " << a.shape << (a.mass_given ? "" : " without a mass") << ": "
         << (!a.failure.empty()   ? "failed: " + clip(a.failure)
             : !a.refused.empty() ? std::string("not offered")
             : a.mass_given       ? "largest relative error " + sci(a.relative_error)
                                  : default_mass_text(a))
         << "\n";
+  }
   if (cut) out << "(cells and lines cut at their first line or width: the report's engines.md and engines.json hold them whole)\n";
 }
 

@@ -171,7 +171,8 @@ for (const k of [1, 10, 100]) {
 // linear axes and ANGULAR_Y, ANGULAR_Z are LOCKED (a hinge about world y), gravity 9.81 along -z,
 // damping 0, released from rest; the ideal step time the step. Printed: the largest loss of the
 // swing's energy (E0 - E) / (E0 - V_floor), V_floor = -m g l the bob hanging below the pivot, over
-// n steps; the angle at the end and the first time from which it stays within 1e-7 rad of it; and
+// n steps; the friction its free axis reads (HP_Constraint_GetAxisFriction); the angle at the
+// end and the first time from which it stays within 1e-7 rad of it; and
 // for a swing of 0.3 rad the period (from the downward zero crossings over 20 s, linear
 // interpolation) against the exact 4 K(sin(a/2)) sqrt(I / (m g l)), I = 1.001 (K by the
 // arithmetic-geometric mean).
@@ -204,6 +205,7 @@ function pendulum(a, h, n) {
   for (const axis of [A.LINEAR_X, A.LINEAR_Y, A.LINEAR_Z, A.ANGULAR_Y, A.ANGULAR_Z])
     ck(H.HP_Constraint_SetAxisMode(joint, axis, H.ConstraintAxisLimitMode.LOCKED));
   ck(H.HP_Constraint_SetEnabled(joint, 1));
+  const friction = ck(H.HP_Constraint_GetAxisFriction(joint, A.ANGULAR_X)); // the hinge's free axis
   const energy = () => {
     const x = ck(H.HP_Body_GetQTransform(bob))[0], v = ck(H.HP_Body_GetLinearVelocity(bob));
     const w = ck(H.HP_Body_GetAngularVelocity(bob));
@@ -221,13 +223,14 @@ function pendulum(a, h, n) {
     if (Math.abs(now - previous) > 1e-7) still = k;
     previous = now;
   }
-  return { lost, angle: previous, stillFrom: still * h, crossings };
+  return { lost, angle: previous, stillFrom: still * h, crossings, friction };
 }
 for (const h of [0.01, 0.002]) {
   const r = pendulum(0.1, h, Math.round(100 / h));
   console.log(`pendulum_small_h${h}_swing_energy_lost_max`, r.lost.toExponential(6));
   console.log(`pendulum_small_h${h}_angle_at_t100`, r.angle.toExponential(4));
   console.log(`pendulum_small_h${h}_still_from_t`, r.stillFrom.toFixed(2));
+  console.log(`pendulum_small_h${h}_free_axis_friction`, r.friction);
 }
 {
   const a = 0.3, r = pendulum(a, 0.001, 20000);
