@@ -115,6 +115,12 @@ def held_robot_mass_error(library, report="dynamics-mujoco/dynamics.json"):
     raise KeyError(f"{report}: no library {library}")
 
 
+def jointed(integrator, scenario, report, field):
+    """A jointed scenario's long run: its largest anchor or loop separation, or its largest energy error."""
+    s = engine_scenario(integrator, scenario, report)
+    return s["energy_max"] if field == "energy" else s["constraint_max"]["position" if field == "anchor" else "loop"]
+
+
 def largest_axis_error(program, shape):
     return max(abs(repro(program, f"{shape}_{axis}_bullet_over_exact") - 1) for axis in "xyz")
 
@@ -269,24 +275,21 @@ CHECKS = [
      lambda: repro("havok_free_body", "pendulum_small_h0.01_swing_energy_lost_max"),
      lambda: engine_scenario("exec::havok::step", "pendulum_small", "engines-havok/engines.json")["energy_max"],
      1e-5, True),
-    # Rapier's and Jolt's solver iterations on pendulum_large: the same setup stepped the same
-    # way in both, the reproducer's numbers printed to 7 digits: 1e-6.
-    *[(f"{name}-iterations", f"{name}: pendulum_large's {what} over 10^5 steps, {setting}",
-       (lambda program=program, key=key: repro(program, key)),
-       (lambda integrator=integrator, report=report, field=field:
-        engine_scenario(integrator, "pendulum_large", report)["constraint_max"]["position"] if field == "anchor"
-        else engine_scenario(integrator, "pendulum_large", report)["energy_max"]), 1e-6, True)
-      for name, program, report, setting, integrator, prefix in [
-          ("rapier", "rapier_pendulum", "pendulum-rapier/engines.json", "4 iterations",
-           "exec::rapier::impulse_joints", "pendulum_large_iterations_4"),
-          ("rapier", "rapier_pendulum", "pendulum-rapier/engines.json", "16 iterations",
-           "exec::rapier::impulse_joints_16_iterations", "pendulum_large_iterations_16"),
-          ("jolt", "jolt_pendulum", "pendulum-jolt/engines.json", "2 position steps",
-           "exec::jolt::default", "pendulum_large_position_steps_2"),
-          ("jolt", "jolt_pendulum", "pendulum-jolt/engines.json", "8 position steps",
-           "exec::jolt::position_steps_8", "pendulum_large_position_steps_8")]
-      for what, field, key in [("largest anchor separation", "anchor", prefix + "_anchor_max"),
-                               ("largest energy error", "energy", prefix + "_energy_max")]],
+    # The jointed scenarios in Rapier, Jolt, Havok and cannon-es (<engine>_joints.mjs): the same setup stepped the
+    # same way in both, 10^5 steps, each solver setting the audit's integrator of that name; the reproducer's
+    # numbers printed to 7 digits, the measures' double arithmetic in another order (1e-9 of the smallest, an
+    # anchor of 2.8e-7 m): 1e-6.
+    *[(f"{engine}-joints", f"{engine}: {scenario}'s largest {what} over 10^5 steps, {setting}",
+       (lambda program=f"{engine}_joints", key=f"{scenario}_{setting}_{field}_max": repro(program, key)),
+       (lambda integrator=f"exec::{client}::{setting}", scenario=scenario, report=f"joints-{engine}/engines.json",
+        field=field: jointed(integrator, scenario, report, field)), 1e-6, True)
+      for engine, client, settings in [("rapier", "rapier", ["impulse_joints", "impulse_joints_16_iterations"]),
+                                       ("jolt", "jolt", ["default", "position_steps_8", "velocity_steps_40"]),
+                                       ("havok", "havok", ["step"]), ("cannon", "cannon_es", ["World.step"])]
+      for setting in settings
+      for scenario in ["pendulum_small", "pendulum_large", "heavy_top", "double_pendulum", "chain5", "four_bar"]
+      for field, what in [("anchor", "anchor separation"), ("loop", "loop separation"), ("energy", "energy error")]
+      if field != "loop" or scenario == "four_bar"],
     ("havok-convex-hull", "Havok 1.3.14: a convex hull's moments (the tetrahedron), largest relative error",
      lambda: repro("havok_free_body", "convex_hull_x1_moment_largest_relative_error"),
      lambda: shape_error("exec::havok", "convex_hull", "engines-havok/engines.json"), 1e-5, True),

@@ -1,0 +1,95 @@
+// havok_joints.mjs -- the audit's jointed scenarios (jointed.mjs: the pendulums, the heavy top, the double
+// pendulum, chain5, the four-bar loop) in Havok (@babylonjs/havok, single precision WASM): a DYNAMIC body a body
+// with a 0.1 m sphere shape, its mass properties by HP_Body_SetMassProperties (centre of mass at its origin, the
+// mass, the principal moments divided by the mass: "Inertia for mass of 1"), damping 0, ALWAYS_ACTIVE, started at
+// its pose and velocity; a joint an HP_Constraint locking its three linear axes (a ball) and, for a hinge about
+// world y, its angular Y and Z (its X along world y, its Y along world x), the anchors in each body's frame at
+// the start, to a STATIC body at the origin or between links (the four-bar's loop: the ground the parent, the
+// rocker the child); gravity 9.81 along -z. 1e5 steps of HP_World_Step(h), the ideal step time set to h before
+// each (h 0.01; the heavy top's 0.002). Printed for each: the largest anchor separation and loop separation (m)
+// and the largest energy change relative to the energy above the potential's floor (jointed.mjs's longRun).
+// Run: node havok_joints.mjs PATH/TO/node_modules/@babylonjs/havok
+// Output: lines "name value". Uses only Havok and plain JavaScript.
+import { readFileSync } from 'fs';
+import { pathToFileURL } from 'url';
+import { GRAVITY, bodiesAtStart, longRun, quaternionOf, rotateBack, rotationOf, scenarios, sub } from './jointed.mjs';
+const dir = process.argv[2];
+if (!dir) { console.error('usage: node havok_joints.mjs PATH/TO/node_modules/@babylonjs/havok'); process.exit(1); }
+const pkg = JSON.parse(readFileSync(dir + '/package.json', 'utf8'));
+const HavokPhysics = (await import(pathToFileURL(dir + '/lib/esm/HavokPhysics_es.js').href)).default;
+const wasmBinary = readFileSync(dir + '/lib/esm/HavokPhysics.wasm');
+console.log('havok_version', pkg.version);
+let H = null;
+/** The value of a Havok call that returns [result, value], its result checked. */
+const ck = (r) => {
+  const result = Array.isArray(r) ? r[0] : r;
+  if (result !== H.Result.RESULT_OK) throw new Error(`a Havok call returned ${result}`);
+  return Array.isArray(r) ? r[1] : r;
+};
+
+function world(s) {
+  const w = ck(H.HP_World_Create());
+  ck(H.HP_World_SetGravity(w, [0, 0, -GRAVITY]));
+  const shape = ck(H.HP_Shape_CreateSphere([0, 0, 0], 0.1));
+  const make = (dynamic, mass, inertia, rotation, x, v, omega) => {
+    const b = ck(H.HP_Body_Create());
+    ck(H.HP_Body_SetShape(b, shape));
+    ck(H.HP_Body_SetMotionType(b, dynamic ? H.MotionType.DYNAMIC : H.MotionType.STATIC));
+    if (dynamic) {
+      ck(H.HP_Body_SetMassProperties(b, [[0, 0, 0], mass, inertia.map((i) => i / mass), [0, 0, 0, 1]]));
+      ck(H.HP_Body_SetLinearDamping(b, 0));
+      ck(H.HP_Body_SetAngularDamping(b, 0));
+    }
+    const q = quaternionOf(rotation);
+    ck(H.HP_Body_SetQTransform(b, [x, [q.x, q.y, q.z, q.w]]));
+    ck(H.HP_World_AddBody(w, b, false));
+    if (dynamic) {
+      ck(H.HP_Body_SetActivationControl(b, H.ActivationControl.ALWAYS_ACTIVE));
+      ck(H.HP_Body_SetLinearVelocity(b, v));
+      ck(H.HP_Body_SetAngularVelocity(b, omega));
+    }
+    return { id: b, rotation, x };
+  };
+  let ground = null;
+  const fixed = () => (ground ??= make(false, 0, [0, 0, 0], [1, 0, 0, 0, 1, 0, 0, 0, 1], [0, 0, 0], [0, 0, 0], [0, 0, 0]));
+  const joint = (point, parent, child, hinge) => {
+    const c = ck(H.HP_Constraint_Create());
+    ck(H.HP_Constraint_SetParentBody(c, parent.id));
+    ck(H.HP_Constraint_SetChildBody(c, child.id));
+    for (const [set, b] of [[H.HP_Constraint_SetAnchorInParent, parent], [H.HP_Constraint_SetAnchorInChild, child]])
+      ck(set(c, rotateBack(b.rotation, sub(point, b.x)), rotateBack(b.rotation, [0, 1, 0]), rotateBack(b.rotation, [1, 0, 0])));
+    const locked = [H.ConstraintAxis.LINEAR_X, H.ConstraintAxis.LINEAR_Y, H.ConstraintAxis.LINEAR_Z];
+    if (hinge) locked.push(H.ConstraintAxis.ANGULAR_Y, H.ConstraintAxis.ANGULAR_Z);
+    for (const axis of locked) ck(H.HP_Constraint_SetAxisMode(c, axis, H.ConstraintAxisLimitMode.LOCKED));
+    ck(H.HP_Constraint_SetEnabled(c, 1));
+  };
+  const of = s.links ?? [s], made = [];
+  // Each body made, then its joint to its parent (the static body made at the first joint, after the first body).
+  bodiesAtStart(s).forEach((start, k) => {
+    const b = make(true, of[k].mass, of[k].inertia, start.rotation, start.x, start.v, start.w);
+    made.push(b);
+    joint(start.pivot, k === 0 ? fixed() : made[k - 1], b, s.joint !== 'ball');
+  });
+  if (s.loop) joint(s.loop.anchor, fixed(), made[made.length - 1], true);
+  return {
+    step() {
+      ck(H.HP_World_SetIdealStepTime(w, s.h));
+      ck(H.HP_World_Step(w, s.h));
+    },
+    frames: () => made.map((b) => {
+      const [x, [qx, qy, qz, qw]] = ck(H.HP_Body_GetQTransform(b.id));
+      return { rotation: rotationOf({ x: qx, y: qy, z: qz, w: qw }), x, v: ck(H.HP_Body_GetLinearVelocity(b.id)),
+               w: ck(H.HP_Body_GetAngularVelocity(b.id)) };
+    }),
+    free: () => ck(H.HP_World_Release(w)),
+  };
+}
+
+// Each scenario in a Havok instance of its own: a run's last digits depend on what the instance ran before it
+// (the four-bar after chain5 in one instance: its largest anchor separation 6.489966e-3 m, 6.473416e-3 alone).
+for (const [name, s] of Object.entries(scenarios)) {
+  H = await HavokPhysics({ wasmBinary });
+  const w = world(s);
+  longRun(`${name}_step`, s, w, 100000);
+  w.free();
+}

@@ -1,0 +1,98 @@
+// jolt_joints.mjs -- the audit's jointed scenarios (jointed.mjs: the pendulums, the heavy top, the double
+// pendulum, chain5, the four-bar loop) in Jolt Physics (npm jolt-physics, single precision WASM), at its
+// solver's defaults (PhysicsSettings' mNumVelocitySteps 10, mNumPositionSteps 2), at 8 position steps and at 40
+// velocity steps: a dynamic Body a body, a 0.1 m sphere shape with its mass properties overridden
+// (EOverrideMassProperties_MassAndInertiaProvided: the mass, the principal moments as diag(I)), damping 0
+// (Jolt's defaults are 0.05), the angular velocity's clamp raised to 1e6, sleeping off, one object layer whose
+// pair is not enabled (nothing collides), started at its pose and velocity; a hinge a HingeConstraint (axis y,
+// normal axis x), a ball a PointConstraint, each in world space at the joint's point, to a static body at the
+// origin or between links; gravity 9.81 along -z. 1e5 steps of JoltInterface.Step(h, 1) (h 0.01; the heavy
+// top's 0.002). Printed for each: the largest anchor separation and loop separation (m) and the largest energy
+// change relative to the energy above the potential's floor (jointed.mjs's longRun).
+// Run: node jolt_joints.mjs PATH/TO/node_modules/jolt-physics/dist/jolt-physics.wasm-compat.js
+// Output: lines "name value". Uses only Jolt and plain JavaScript.
+import { readFileSync } from 'fs';
+import { dirname } from 'path';
+import { pathToFileURL } from 'url';
+import { GRAVITY, bodiesAtStart, longRun, quaternionOf, rotationOf, scenarios } from './jointed.mjs';
+const entry = process.argv[2];
+if (!entry) { console.error('usage: node jolt_joints.mjs PATH/TO/node_modules/jolt-physics/dist/jolt-physics.wasm-compat.js'); process.exit(1); }
+const pkg = JSON.parse(readFileSync(dirname(dirname(entry)) + '/package.json', 'utf8'));
+const Jolt = await (await import(pathToFileURL(entry).href)).default();
+console.log('jolt_version', pkg.version);
+
+const xyz = (v) => [v.GetX(), v.GetY(), v.GetZ()];
+const quaternion = (q) => ({ x: q.GetX(), y: q.GetY(), z: q.GetZ(), w: q.GetW() });
+
+function world(s, velocitySteps, positionSteps) {
+  const settings = new Jolt.JoltSettings();
+  const pairs = new Jolt.ObjectLayerPairFilterTable(1); // no EnableCollision call: layer 0 vs 0 disabled
+  const layers = new Jolt.BroadPhaseLayerInterfaceTable(1, 1);
+  layers.MapObjectToBroadPhaseLayer(0, new Jolt.BroadPhaseLayer(0));
+  settings.mObjectLayerPairFilter = pairs;
+  settings.mBroadPhaseLayerInterface = layers;
+  settings.mObjectVsBroadPhaseLayerFilter = new Jolt.ObjectVsBroadPhaseLayerFilterTable(layers, 1, pairs, 1);
+  const jolt = new Jolt.JoltInterface(settings);
+  const system = jolt.GetPhysicsSystem();
+  system.SetGravity(new Jolt.Vec3(0, 0, -GRAVITY));
+  const physics = system.GetPhysicsSettings();
+  physics.mNumVelocitySteps = velocitySteps;
+  physics.mNumPositionSteps = positionSteps;
+  system.SetPhysicsSettings(physics);
+  const bodies = system.GetBodyInterface();
+  const shape = new Jolt.SphereShape(0.1, null);
+  let ground = null;
+  const fixed = () => {
+    if (ground) return ground;
+    ground = bodies.CreateBody(new Jolt.BodyCreationSettings(shape, new Jolt.RVec3(0, 0, 0), new Jolt.Quat(0, 0, 0, 1), Jolt.EMotionType_Static, 0));
+    bodies.AddBody(ground.GetID(), Jolt.EActivation_DontActivate);
+    return ground;
+  };
+  const hinge = (point, a, b) => {
+    const c = new Jolt.HingeConstraintSettings();
+    c.mSpace = Jolt.EConstraintSpace_WorldSpace;
+    c.mPoint1 = c.mPoint2 = new Jolt.RVec3(...point);
+    c.mHingeAxis1 = c.mHingeAxis2 = new Jolt.Vec3(0, 1, 0);
+    c.mNormalAxis1 = c.mNormalAxis2 = new Jolt.Vec3(1, 0, 0);
+    system.AddConstraint(c.Create(a, b));
+  };
+  const ball = (point, a, b) => {
+    const c = new Jolt.PointConstraintSettings();
+    c.mSpace = Jolt.EConstraintSpace_WorldSpace;
+    c.mPoint1 = c.mPoint2 = new Jolt.RVec3(...point);
+    system.AddConstraint(c.Create(a, b));
+  };
+  const of = s.links ?? [s], made = [];
+  // Each body made, then its joint to its parent (the static body made at the first joint, after the first body).
+  bodiesAtStart(s).forEach((start, k) => {
+    const q = quaternionOf(start.rotation);
+    const c = new Jolt.BodyCreationSettings(shape, new Jolt.RVec3(...start.x), new Jolt.Quat(q.x, q.y, q.z, q.w), Jolt.EMotionType_Dynamic, 0);
+    c.mOverrideMassProperties = Jolt.EOverrideMassProperties_MassAndInertiaProvided;
+    c.mMassPropertiesOverride.mMass = of[k].mass;
+    c.mMassPropertiesOverride.mInertia = new Jolt.Mat44().sScaleVec3(new Jolt.Vec3(...of[k].inertia));
+    c.mLinearDamping = 0;
+    c.mAngularDamping = 0;
+    c.mMaxAngularVelocity = 1e6;
+    c.mAllowSleeping = false;
+    const b = bodies.CreateBody(c);
+    bodies.AddBody(b.GetID(), Jolt.EActivation_Activate);
+    b.SetLinearVelocity(new Jolt.Vec3(...start.v));
+    b.SetAngularVelocity(new Jolt.Vec3(...start.w));
+    made.push(b);
+    (s.joint === 'ball' ? ball : hinge)(start.pivot, k === 0 ? fixed() : made[k - 1], b);
+  });
+  if (s.loop) hinge(s.loop.anchor, made[made.length - 1], fixed());
+  return {
+    step: () => jolt.Step(s.h, 1),
+    frames: () => made.map((b) => ({ rotation: rotationOf(quaternion(b.GetRotation())), x: xyz(b.GetCenterOfMassPosition()),
+                                     v: xyz(b.GetLinearVelocity()), w: xyz(b.GetAngularVelocity()) })),
+    free: () => Jolt.destroy(jolt),
+  };
+}
+
+for (const [setting, velocitySteps, positionSteps] of [['default', 10, 2], ['position_steps_8', 10, 8], ['velocity_steps_40', 40, 2]])
+  for (const [name, s] of Object.entries(scenarios)) {
+    const w = world(s, velocitySteps, positionSteps);
+    longRun(`${name}_${setting}`, s, w, 100000);
+    w.free();
+  }

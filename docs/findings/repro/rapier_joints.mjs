@@ -1,0 +1,70 @@
+// rapier_joints.mjs -- the audit's jointed scenarios (jointed.mjs: the pendulums, the heavy top, the double
+// pendulum, chain5, the four-bar loop) in Rapier (@dimforge/rapier3d-compat, single precision WASM), each at
+// World.numSolverIterations 4 (its default) and 16: a dynamic RigidBody a body, its mass and principal moments
+// by setAdditionalMassProperties (centre of mass at the body's origin, no collider), damping 0, sleeping off,
+// started at its pose and velocity; a hinge a JointData.revolute (axis y), a ball a JointData.spherical, each an
+// impulse joint to a fixed body at the origin or between links, their anchors in each body's frame; gravity
+// 9.81 along -z. 1e5 steps of world.step() with world.timestep = h (0.01; the heavy top's 0.002). Printed for each: the largest anchor
+// separation and loop separation (m) and the largest energy change relative to the energy above the
+// potential's floor (jointed.mjs's longRun).
+// Run: node rapier_joints.mjs PATH/TO/node_modules/@dimforge/rapier3d-compat
+// Output: lines "name value". Uses only Rapier and plain JavaScript.
+import { readFileSync } from 'fs';
+import { pathToFileURL } from 'url';
+import { GRAVITY, bodiesAtStart, longRun, quaternionOf, rotationOf, scenarios, sub } from './jointed.mjs';
+const dir = process.argv[2];
+if (!dir) { console.error('usage: node rapier_joints.mjs PATH/TO/node_modules/@dimforge/rapier3d-compat'); process.exit(1); }
+const pkg = JSON.parse(readFileSync(dir + '/package.json', 'utf8'));
+const RAPIER = (await import(pathToFileURL(dir + '/dist/rapier.mjs').href)).default;
+await RAPIER.init();
+console.log('rapier_version', pkg.version);
+
+const v3 = (a) => ({ x: a[0], y: a[1], z: a[2] });
+const xyz = (v) => [v.x, v.y, v.z];
+const Y = v3([0, 1, 0]);
+
+function world(s, iterations) {
+  const h = s.h;
+  const w = new RAPIER.World(v3([0, 0, -GRAVITY]));
+  w.numSolverIterations = iterations;
+  const ground = w.createRigidBody(RAPIER.RigidBodyDesc.fixed());
+  const bodies = s.links ?? [s];
+  const made = bodiesAtStart(s).map((start, k) =>
+    w.createRigidBody(
+      RAPIER.RigidBodyDesc.dynamic()
+        .setTranslation(...start.x)
+        .setRotation(quaternionOf(start.rotation))
+        .setLinvel(...start.v)
+        .setAngvel(v3(start.w))
+        .setAdditionalMassProperties(bodies[k].mass, v3([0, 0, 0]), v3(bodies[k].inertia), { x: 0, y: 0, z: 0, w: 1 })
+        .setLinearDamping(0)
+        .setAngularDamping(0)
+        .setCanSleep(false),
+    ));
+  const joint = (data, a, b) => w.createImpulseJoint(data, a, b, true);
+  if (!s.links) {
+    const pivot = v3(s.com.map((c) => -c)); // the pivot in the body's frame
+    joint(s.joint === 'ball' ? RAPIER.JointData.spherical(v3([0, 0, 0]), pivot) : RAPIER.JointData.revolute(v3([0, 0, 0]), pivot, Y), ground, made[0]);
+  } else {
+    s.links.forEach((l, k) => {
+      const parentCom = k === 0 ? [0, 0, 0] : s.links[k - 1].com;
+      joint(RAPIER.JointData.revolute(v3(sub(l.hinge, parentCom)), v3(l.com.map((c) => -c)), Y), k === 0 ? ground : made[k - 1], made[k]);
+    });
+    if (s.loop) {
+      const last = s.links.length - 1;
+      joint(RAPIER.JointData.revolute(v3(sub(s.loop.point, s.links[last].com)), v3(s.loop.anchor), Y), made[last], ground);
+    }
+  }
+  return {
+    step() { w.timestep = h; w.step(); },
+    frames: () => made.map((b) => ({ rotation: rotationOf(b.rotation()), x: xyz(b.translation()), v: xyz(b.linvel()), w: xyz(b.angvel()) })),
+    free: () => w.free(),
+  };
+}
+
+for (const [setting, iterations] of [['impulse_joints', 4], ['impulse_joints_16_iterations', 16]])
+  for (const [name, s] of Object.entries(scenarios)) {
+    const w = world(s, iterations);
+    longRun(`${name}_${setting}`, s, w, 100000);
+    w.free();
+  }
