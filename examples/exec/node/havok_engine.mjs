@@ -23,13 +23,26 @@ import { chainLinks, oneBodyStart, quaternionOf, rotate, sub } from './bodies.mj
 import { Refused, frame, hullPoints, scenarioOf, serveEngine } from './protocol.mjs';
 
 const root = new URL('./node_modules/@babylonjs/havok/', import.meta.url);
-const HK = await HavokPhysics({ wasmBinary: readFileSync(new URL('lib/esm/HavokPhysics.wasm', root)) });
+// Each run in a Havok instance of its own: a run's last digits depend on what its instance ran before (the
+// four-bar after chain5 in one instance leaves its anchors up to 6.489966e-3 m apart, alone 6.473416e-3), and a
+// run's numbers should be those of its setup alone. The module is compiled once; an instance takes ~7 ms.
+const compiled = await WebAssembly.compile(readFileSync(new URL('lib/esm/HavokPhysics.wasm', root)));
+const instance = () =>
+  HavokPhysics({
+    instantiateWasm(imports, done) {
+      WebAssembly.instantiate(compiled, imports).then((i) => done(i, compiled));
+      return {};
+    },
+  });
+/** The instance the shapes are built in. */
+const HK = await instance();
 const version = JSON.parse(readFileSync(new URL('package.json', root))).version;
 
-/** The value of a Havok call that returns [result, value]; its result checked. */
+/** The value of a Havok call that returns [result, value]; its result checked (by its number: each instance
+ * has enum objects of its own). */
 function ok(what, r) {
   const [result, ...value] = Array.isArray(r) ? r : [r];
-  if (result !== HK.Result.RESULT_OK) throw new Error(`Havok ${version}: ${what}: result ${result}`);
+  if (result?.value !== HK.Result.RESULT_OK.value) throw new Error(`Havok ${version}: ${what}: result ${result?.value}`);
   return value.length === 1 ? value[0] : value;
 }
 /** Row-major rotation of a quaternion [x, y, z, w]. */
@@ -46,7 +59,8 @@ const inBody = (r, x) => [0, 1, 2].map((j) => r[j] * x[0] + r[3 + j] * x[1] + r[
 const integrators = [{ name: 'step', origin: 'HP_World_Step with the ideal step time set to h' }];
 
 class Run {
-  constructor(integrator, scenario) {
+  constructor(HK, integrator, scenario) {
+    this.HK = HK;
     if (!integrators.some((i) => i.name === integrator)) throw new Refused(`no integrator ${integrator}`);
     const s = scenarioOf(scenario);
     this.s = s;
@@ -114,10 +128,12 @@ class Run {
   }
 
   position(k) {
+    const HK = this.HK;
     return ok('HP_Body_GetQTransform', HK.HP_Body_GetQTransform(this.bodies[k].id))[0];
   }
 
   applyImpulses(h) {
+    const HK = this.HK;
     const s = this.s;
     const impulse = (k, f) => ok('HP_Body_ApplyImpulse', HK.HP_Body_ApplyImpulse(this.bodies[k].id, this.position(k), f.map((x) => x * h)));
     if (s.central !== 0) {
@@ -135,6 +151,7 @@ class Run {
   }
 
   step(h) {
+    const HK = this.HK;
     if (!(h > 0)) throw new Error(`Havok ${version}: HP_World_Step takes a positive step, got ${h}`);
     ++this.steps;
     ok('HP_World_SetIdealStepTime', HK.HP_World_SetIdealStepTime(this.world, h));
@@ -146,6 +163,7 @@ class Run {
   }
 
   reading() {
+    const HK = this.HK;
     const frames = this.bodies.map((b) => {
       const [x, q] = ok('HP_Body_GetQTransform', HK.HP_Body_GetQTransform(b.id));
       return frame(rotationOf(q), x, ok('v', HK.HP_Body_GetLinearVelocity(b.id)), ok('w', HK.HP_Body_GetAngularVelocity(b.id)));
@@ -154,6 +172,7 @@ class Run {
   }
 
   free() {
+    const HK = this.HK;
     HK.HP_World_Release(this.world);
   }
 }
@@ -226,7 +245,7 @@ await serveEngine(
       '("Simulate the world and advance time by `timestep` seconds", HavokPhysics.d.ts); no order declared',
     integrators,
   },
-  (integrator, scenario) => new Run(integrator, scenario),
+  async (integrator, scenario) => new Run(await instance(), integrator, scenario),
   moments,
   withoutMass,
 );

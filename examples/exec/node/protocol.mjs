@@ -4,8 +4,8 @@
 // numbers (JSON.stringify writes the shortest decimal that reads back exactly).
 //
 // serveEngine(hello, start, moments, withoutMass) answers the audit until it closes our input.
-// start(integrator, scenario) builds a run, or throws Refused for a scenario the engine cannot
-// express; a run has step(h) (throws on the engine's failure), reading() and optionally
+// start(integrator, scenario) builds a run (or a promise of one), or throws Refused for a scenario
+// the engine cannot express; a run has step(h) (throws on the engine's failure), reading() and optionally
 // modelDiffers and free(). moments(shape) (optional) gives the principal moments the engine
 // computes for a shape ({name, mass, size}), or throws Refused for a shape it does not offer;
 // withoutMass(shape) (optional) what the engine gives a body built from the shape ({name,
@@ -50,12 +50,12 @@ export function scenarioOf(s) {
  * x = 1 + 2^-30 (a double, not a float) and read back at once. 'double' when x comes back,
  * 'single' when float's rounding of it (1) does; the handshake's "precision", from which the
  * audit sets its rounding floors. */
-export function precisionOf(start, integrator) {
+export async function precisionOf(start, integrator) {
   const x = 1 + 2 ** -30;
   const zero = [0, 0, 0];
   let run;
   try {
-    run = start(integrator, {
+    run = await start(integrator, {
       name: 'precision', structure: 'one_body', joint: 'free', mass: 1, inertia: [1, 2, 3], com: zero,
       rotation0: [1, 0, 0, 0, 1, 0, 0, 0, 1], position0: [x, 0, 0], velocity0: zero, omega0: zero, gravity: 0, central: 0,
     });
@@ -77,7 +77,7 @@ export function precisionOf(start, integrator) {
 
 export async function serveEngine(hello, start, moments, withoutMass) {
   // The precision measured before the handshake, said in the origin.
-  const { precision, said } = precisionOf(start, hello.integrators[0].name);
+  const { precision, said } = await precisionOf(start, hello.integrators[0].name);
   send({ protocol: 'mechcheck', version: 1, kind: 'engine', numbers: 'decimal', shapes: !!moments,
     ...(withoutMass ? { shapes_without_mass: true } : {}), precision, ...hello,
     origin: `${hello.origin}; ${said}` });
@@ -87,7 +87,7 @@ export async function serveEngine(hello, start, moments, withoutMass) {
     const r = JSON.parse(line);
     if (r.op === 'start') {
       try {
-        const run = start(r.integrator, r.scenario);
+        const run = await start(r.integrator, r.scenario);
         runs.set(r.run, run);
         const reply = { ok: true, reading: run.reading() };
         if (run.modelDiffers) reply.model_differs = run.modelDiffers;
