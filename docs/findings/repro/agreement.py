@@ -115,10 +115,54 @@ def held_robot_mass_error(library, report="dynamics-mujoco/dynamics.json"):
     raise KeyError(f"{report}: no library {library}")
 
 
-def jointed(integrator, scenario, report, field):
-    """A jointed scenario's long run: its largest anchor or loop separation, or its largest energy error."""
+def long_run(integrator, scenario, report, field):
+    """A scenario's long run: its largest energy error, angular momentum change, anchor or loop separation."""
     s = engine_scenario(integrator, scenario, report)
-    return s["energy_max"] if field == "energy" else s["constraint_max"]["position" if field == "anchor" else "loop"]
+    if field in ("energy", "momentum"):
+        return s[field + "_max"]
+    return s["constraint_max"]["position" if field == "anchor" else "loop"]
+
+
+# The scenarios of <engine>_scenarios.mjs, and which each engine setting runs.
+JOINTED = ["pendulum_small", "pendulum_large", "heavy_top", "double_pendulum", "chain5", "four_bar"]
+FREE = ["projectile", "kepler", "free_top", "free_top_near_axis", "boxes", "free_symmetric_top"] + \
+    [f"body_1_{k}" for k in range(8)]
+def study_series(integrator, scenario, name, report, program, prefix):
+    """Each point of a class's order study as (the reproducer's error, the audit's), n = 32 .. the audit's last."""
+    points = engine_scenario(integrator, scenario, report)["classes"][name]["points"]
+    t_end = 4 if scenario.startswith("body_") else {"free_top": 5, "free_top_near_axis": 10, "boxes": 10,
+                                                      "free_symmetric_top": 5, "pendulum_small": 2,
+                                                      "pendulum_large": 2, "projectile": 1, "kepler": 5}[scenario]
+    return [(repro(program, f"{prefix}_{name.replace(' ', '_')}_error_n{round(t_end / p['h'])}"), p["error"])
+            for p in points]
+
+
+def study_classes(scenario):
+    """The classes of a scenario's order study the reproducers compute (none: the chains and the heavy top)."""
+    if scenario.startswith("pendulum_"):
+        return ["joint coordinates"]
+    if scenario in ("projectile", "kepler"):
+        return ["position", "velocity"]
+    if scenario not in FREE:
+        return []
+    return ["angular velocity"] + (["orientation"] if scenario == "free_symmetric_top" or scenario.startswith("body_") else [])
+
+
+def measured(scenario):
+    """What a long run of the scenario is held to: (field, words)."""
+    if scenario == "projectile":  # no momentum law under gravity
+        return [("energy", "energy error")]
+    if scenario in FREE:
+        return [("momentum", "angular momentum change"), ("energy", "energy error")]
+    loop = [("loop", "loop separation")] if scenario == "four_bar" else []
+    return [("anchor", "anchor separation"), *loop, ("energy", "energy error")]
+
+
+SCENARIO_RUNS = [("rapier", "rapier", "impulse_joints", JOINTED + FREE),
+                 ("rapier", "rapier", "impulse_joints_16_iterations", JOINTED + FREE),
+                 ("jolt", "jolt", "default", JOINTED + FREE), ("jolt", "jolt", "position_steps_8", JOINTED),
+                 ("jolt", "jolt", "velocity_steps_40", JOINTED), ("jolt", "jolt", "gyroscopic", FREE),
+                 ("havok", "havok", "step", JOINTED + FREE), ("cannon", "cannon_es", "World.step", JOINTED + FREE)]
 
 
 def largest_axis_error(program, shape):
@@ -275,21 +319,28 @@ CHECKS = [
      lambda: repro("havok_free_body", "pendulum_small_h0.01_swing_energy_lost_max"),
      lambda: engine_scenario("exec::havok::step", "pendulum_small", "engines-havok/engines.json")["energy_max"],
      1e-5, True),
-    # The jointed scenarios in Rapier, Jolt, Havok and cannon-es (<engine>_joints.mjs): the same setup stepped the
-    # same way in both, 10^5 steps, each solver setting the audit's integrator of that name; the reproducer's
-    # numbers printed to 7 digits, the measures' double arithmetic in another order (1e-9 of the smallest, an
-    # anchor of 2.8e-7 m): 1e-6.
-    *[(f"{engine}-joints", f"{engine}: {scenario}'s largest {what} over 10^5 steps, {setting}",
-       (lambda program=f"{engine}_joints", key=f"{scenario}_{setting}_{field}_max": repro(program, key)),
-       (lambda integrator=f"exec::{client}::{setting}", scenario=scenario, report=f"joints-{engine}/engines.json",
-        field=field: jointed(integrator, scenario, report, field)), 1e-6, True)
-      for engine, client, settings in [("rapier", "rapier", ["impulse_joints", "impulse_joints_16_iterations"]),
-                                       ("jolt", "jolt", ["default", "position_steps_8", "velocity_steps_40"]),
-                                       ("havok", "havok", ["step"]), ("cannon", "cannon_es", ["World.step"])]
-      for setting in settings
-      for scenario in ["pendulum_small", "pendulum_large", "heavy_top", "double_pendulum", "chain5", "four_bar"]
-      for field, what in [("anchor", "anchor separation"), ("loop", "loop separation"), ("energy", "energy error")]
-      if field != "loop" or scenario == "four_bar"],
+    # The rigid-body scenarios in Rapier, Jolt, Havok and cannon-es (<engine>_scenarios.mjs): the same setup
+    # stepped the same way in both, 10^5 steps, each solver setting the audit's integrator of that name; the
+    # reproducer's numbers printed to 7 digits, the measures' double arithmetic in another order (1e-8 of the
+    # smallest, Jolt's energy error of 7.9e-9): 1e-6.
+    *[(f"{engine}-scenarios", f"{engine}: {scenario}'s largest {what} over 10^5 steps, {setting}",
+       (lambda program=f"{engine}_scenarios", key=f"{scenario}_{setting}_{field}_max": repro(program, key)),
+       (lambda integrator=f"exec::{client}::{setting}", scenario=scenario, report=f"scenarios-{engine}/engines.json",
+        field=field: long_run(integrator, scenario, report, field)), 1e-6, True)
+      for engine, client, setting, names in SCENARIO_RUNS
+      for scenario in names
+      for field, what in measured(scenario)],
+    # The free bodies', the pendulums', the projectile's and Kepler's order studies: each class's error at t_end at
+    # every n the audit ran, held point by point (the largest relative difference of the series, its errors printed
+    # to 7 digits): 1e-6, beside the references' floor below.
+    *[(f"{engine}-scenarios", f"{engine}: {scenario}'s {name} error at t_end, every n, {setting}",
+       (lambda a=(f"exec::{client}::{setting}", scenario, name, f"scenarios-{engine}/engines.json", f"{engine}_scenarios",
+                  f"{scenario}_{setting}"): [r for r, _ in study_series(*a)]),
+       (lambda a=(f"exec::{client}::{setting}", scenario, name, f"scenarios-{engine}/engines.json", f"{engine}_scenarios",
+                  f"{scenario}_{setting}"): [b for _, b in study_series(*a)]), 1e-6, True)
+      for engine, client, setting, names in SCENARIO_RUNS
+      for scenario in names
+      for name in study_classes(scenario)],
     ("havok-convex-hull", "Havok 1.3.14: a convex hull's moments (the tetrahedron), largest relative error",
      lambda: repro("havok_free_body", "convex_hull_x1_moment_largest_relative_error"),
      lambda: shape_error("exec::havok", "convex_hull", "engines-havok/engines.json"), 1e-5, True),
@@ -326,10 +377,23 @@ for finding, what, ours, theirs, tolerance, relative in CHECKS:
         print(f"MISSING   {finding:24s} {what}: {e}")
         failed += 1
         continue
-    diff = abs(a - b) / (abs(b) if relative and b != 0 else 1)
-    ok = math.isfinite(a) and math.isfinite(b) and diff <= tolerance
+    # A series (an order study's points) is held point by point: its largest difference, at the point shown.
+    series = list(zip(a, b)) if isinstance(a, list) else [(a, b)]
+    if isinstance(a, list) and (len(a) != len(b) or not a):
+        print(f"MISSING   {finding:24s} {what}: {len(a)} points against the audit's {len(b)}")
+        failed += 1
+        continue
+    # An order study's errors are relative to the scenario's scale; the reproducer's reference is within 1e-12 of
+    # the audit's exact one (its change from h = 2e-4 to 1e-4 is 1.6e-12 at most), so a difference below 1e-12 is
+    # the references' (an engine in double at its rounding, the projectile's velocity: 2.8e-16).
+    floor = 1e-12 if isinstance(a, list) else 0
+    diffs = [0 if abs(x - y) <= floor else abs(x - y) / (abs(y) if relative and y != 0 else 1) for x, y in series]
+    worst = max(range(len(diffs)), key=lambda i: diffs[i] if math.isfinite(diffs[i]) else math.inf)
+    (a, b), diff = series[worst], diffs[worst]
+    ok = all(math.isfinite(x) and math.isfinite(y) for x, y in series) and diff <= tolerance
     failed += 0 if ok else 1
-    print(f"{'agrees   ' if ok else 'DISAGREES'} {finding:24s} {what}: reproducer {a:.6g}, audit {b:.6g} "
+    points = f" ({len(series)} points, the worst)" if len(series) > 1 else ""
+    print(f"{'agrees   ' if ok else 'DISAGREES'} {finding:24s} {what}: reproducer {a:.6g}, audit {b:.6g}{points} "
           f"({'relative ' if relative else ''}difference {diff:.2g}, tolerance {tolerance:g})")
 print(f"agreement: {len(CHECKS) - failed - skipped} of {len(CHECKS)} pairs within their tolerance, "
       f"{failed} not, {skipped} skipped (library not found)")

@@ -1,35 +1,42 @@
-// havok_joints.mjs -- the audit's jointed scenarios (jointed.mjs: the pendulums, the heavy top, the double
-// pendulum, chain5, the four-bar loop) in Havok (@babylonjs/havok, single precision WASM): a DYNAMIC body a body
-// with a 0.1 m sphere shape, its mass properties by HP_Body_SetMassProperties (centre of mass at its origin, the
-// mass, the principal moments divided by the mass: "Inertia for mass of 1"), damping 0, ALWAYS_ACTIVE, started at
-// its pose and velocity; a joint an HP_Constraint locking its three linear axes (a ball) and, for a hinge about
-// world y, its angular Y and Z (its X along world y, its Y along world x), the anchors in each body's frame at
-// the start, to a STATIC body at the origin or between links (the four-bar's loop: the ground the parent, the
-// rocker the child); gravity 9.81 along -z. 1e5 steps of HP_World_Step(h), the ideal step time set to h before
-// each (h 0.01; the heavy top's 0.002). Printed for each: the largest anchor separation and loop separation (m)
-// and the largest energy change relative to the energy above the potential's floor (jointed.mjs's longRun).
-// Run: node havok_joints.mjs PATH/TO/node_modules/@babylonjs/havok
+// havok_scenarios.mjs -- the audit's rigid-body scenarios (scenarios.mjs: the pendulums, the heavy top, the double
+// pendulum, chain5, the four-bar loop, the free bodies) in Havok (@babylonjs/havok, single precision WASM): a DYNAMIC
+// body a body with a 0.1 m sphere shape, its mass properties by HP_Body_SetMassProperties (centre of mass at its
+// origin, the mass, the principal moments divided by the mass: "Inertia for mass of 1"), damping 0, ALWAYS_ACTIVE,
+// started at its pose and velocity; a joint an HP_Constraint locking its three linear axes (a ball) and, for a hinge
+// about world y, its angular Y and Z (its X along world y, its Y along world x), the anchors in each body's frame at
+// the start, to a STATIC body at the origin or between links (the four-bar's loop: the ground the parent, the rocker
+// the child); the world's gravity the scenario's (9.81 along -z, or none). Kepler's central force as the impulse F h at
+// the centre of mass before each step (Havok takes no force). 1e5 steps of HP_World_Step(h), the ideal step time set to
+// h before each (h 0.01; the heavy top's 0.002, the boxes' 0.0025, the projectile's 1e-4). Printed for each: the
+// largest anchor and loop separations (m), or angular momentum change, and energy change (scenarios.mjs's longRun); a
+// free body's or pendulum's order study besides (scenarios.mjs's orderStudy: each class's error at tEnd in n = steps0
+// .. 16384 steps).
+// Run: node havok_scenarios.mjs PATH/TO/node_modules/@babylonjs/havok
 // Output: lines "name value". Uses only Havok and plain JavaScript.
 import { readFileSync } from 'fs';
 import { pathToFileURL } from 'url';
-import { GRAVITY, bodiesAtStart, longRun, quaternionOf, rotateBack, rotationOf, scenarios, sub } from './jointed.mjs';
+import { bodiesAtStart, centralForce, longRun, orderStudy, quaternionOf, rotateBack, rotationOf, scenarios, sub } from './scenarios.mjs';
 const dir = process.argv[2];
-if (!dir) { console.error('usage: node havok_joints.mjs PATH/TO/node_modules/@babylonjs/havok'); process.exit(1); }
+if (!dir) { console.error('usage: node havok_scenarios.mjs PATH/TO/node_modules/@babylonjs/havok'); process.exit(1); }
 const pkg = JSON.parse(readFileSync(dir + '/package.json', 'utf8'));
 const HavokPhysics = (await import(pathToFileURL(dir + '/lib/esm/HavokPhysics_es.js').href)).default;
 const wasmBinary = readFileSync(dir + '/lib/esm/HavokPhysics.wasm');
 console.log('havok_version', pkg.version);
-let H = null;
 /** The value of a Havok call that returns [result, value], its result checked. */
+let RESULT_OK;
 const ck = (r) => {
   const result = Array.isArray(r) ? r[0] : r;
-  if (result !== H.Result.RESULT_OK) throw new Error(`a Havok call returned ${result}`);
+  if (result !== RESULT_OK) throw new Error(`a Havok call returned ${result}`);
   return Array.isArray(r) ? r[1] : r;
 };
 
-function world(s) {
+// Each world in a Havok instance of its own: a run's last digits depend on what its instance ran before (the
+// four-bar after chain5 in one instance: its largest anchor separation 6.489966e-3 m, 6.473416e-3 alone).
+async function world(s, h = s.h, instance = null) {
+  const H = instance ?? (await HavokPhysics({ wasmBinary }));
+  RESULT_OK = H.Result.RESULT_OK;
   const w = ck(H.HP_World_Create());
-  ck(H.HP_World_SetGravity(w, [0, 0, -GRAVITY]));
+  ck(H.HP_World_SetGravity(w, [0, 0, -s.gravity]));
   const shape = ck(H.HP_Shape_CreateSphere([0, 0, 0], 0.1));
   const make = (dynamic, mass, inertia, rotation, x, v, omega) => {
     const b = ck(H.HP_Body_Create());
@@ -68,13 +75,17 @@ function world(s) {
   bodiesAtStart(s).forEach((start, k) => {
     const b = make(true, of[k].mass, of[k].inertia, start.rotation, start.x, start.v, start.w);
     made.push(b);
-    joint(start.pivot, k === 0 ? fixed() : made[k - 1], b, s.joint !== 'ball');
+    if (s.joint !== 'free') joint(start.pivot, k === 0 ? fixed() : made[k - 1], b, s.joint !== 'ball');
   });
   if (s.loop) joint(s.loop.anchor, fixed(), made[made.length - 1], true);
   return {
     step() {
-      ck(H.HP_World_SetIdealStepTime(w, s.h));
-      ck(H.HP_World_Step(w, s.h));
+      ck(H.HP_World_SetIdealStepTime(w, h));
+      if (s.central) { // Havok takes no force: the impulse F h at the centre of mass
+        const x = ck(H.HP_Body_GetQTransform(made[0].id))[0];
+        ck(H.HP_Body_ApplyImpulse(made[0].id, x, centralForce(s, x).map((f) => f * h)));
+      }
+      ck(H.HP_World_Step(w, h));
     },
     frames: () => made.map((b) => {
       const [x, [qx, qy, qz, qw]] = ck(H.HP_Body_GetQTransform(b.id));
@@ -85,11 +96,18 @@ function world(s) {
   };
 }
 
-// Each scenario in a Havok instance of its own: a run's last digits depend on what the instance ran before it
-// (the four-bar after chain5 in one instance: its largest anchor separation 6.489966e-3 m, 6.473416e-3 alone).
 for (const [name, s] of Object.entries(scenarios)) {
-  H = await HavokPhysics({ wasmBinary });
-  const w = world(s);
+  const w = await world(s);
   longRun(`${name}_step`, s, w, 100000);
+  w.free();
+  await orderStudy(`${name}_step`, name, s, (h) => world(s, h));
+}
+// The history: the four-bar in an instance that has built the five other jointed scenarios' worlds before it
+// (built and released, not stepped).
+{
+  const H = await HavokPhysics({ wasmBinary });
+  for (const name of ['pendulum_small', 'pendulum_large', 'heavy_top', 'double_pendulum', 'chain5']) (await world(scenarios[name], 0.01, H)).free();
+  const w = await world(scenarios.four_bar, 0.01, H);
+  longRun('four_bar_after_five_worlds_step', scenarios.four_bar, w, 100000);
   w.free();
 }

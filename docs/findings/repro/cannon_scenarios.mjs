@@ -1,19 +1,21 @@
-// cannon_joints.mjs -- the audit's jointed scenarios (jointed.mjs: the pendulums, the heavy top, the double
-// pendulum, chain5, the four-bar loop) in cannon-es (double precision JavaScript): a Body a body, its mass and
-// principal moments set directly (Body.inertia and invInertia, then updateInertiaWorld; no shape), damping 0
-// (cannon-es's defaults are 0.01), at its centre of mass, started at its pose and velocity; a hinge a
-// HingeConstraint (axis y), a ball a PointToPointConstraint, their pivots in each body's frame, to a static Body
-// (mass 0) at the origin or between links; World.gravity 9.81 along -z. 1e5 steps of World.step(h) (h 0.01; the
-// heavy top's 0.002). Printed for each: the largest anchor separation and loop separation (m) and the largest
-// energy change relative to the energy above the potential's floor (jointed.mjs's longRun).
-// Run: node cannon_joints.mjs PATH/TO/node_modules/cannon-es/dist/cannon-es.js
+// cannon_scenarios.mjs -- the audit's rigid-body scenarios (scenarios.mjs: the pendulums, the heavy top, the double
+// pendulum, chain5, the four-bar loop, the free bodies) in cannon-es (double precision JavaScript): a Body a body, its
+// mass and principal moments set directly (Body.inertia and invInertia, then updateInertiaWorld; no shape), damping 0
+// (cannon-es's defaults are 0.01), at its centre of mass, started at its pose and velocity; a hinge a HingeConstraint
+// (axis y), a ball a PointToPointConstraint, their pivots in each body's frame, to a static Body (mass 0) at the origin
+// or between links; World.gravity the scenario's (9.81 along -z, or none). Kepler's central force set in Body.force
+// before each step. 1e5 steps of World.step(h) (h 0.01; the heavy top's 0.002, the boxes' 0.0025, the projectile's
+// 1e-4). Printed for each: the largest anchor and loop separations (m), or angular momentum change, and energy change
+// (scenarios.mjs's longRun); a free body's or pendulum's order study besides (scenarios.mjs's orderStudy: each class's
+// error at tEnd in n = steps0 .. 16384 steps).
+// Run: node cannon_scenarios.mjs PATH/TO/node_modules/cannon-es/dist/cannon-es.js
 // Output: lines "name value". Uses only cannon-es and plain JavaScript.
 import { readFileSync } from 'fs';
 import { dirname } from 'path';
 import { pathToFileURL } from 'url';
-import { GRAVITY, bodiesAtStart, longRun, quaternionOf, scenarios, sub } from './jointed.mjs';
+import { bodiesAtStart, centralForce, longRun, orderStudy, quaternionOf, scenarios, sub } from './scenarios.mjs';
 const entry = process.argv[2];
-if (!entry) { console.error('usage: node cannon_joints.mjs PATH/TO/node_modules/cannon-es/dist/cannon-es.js'); process.exit(1); }
+if (!entry) { console.error('usage: node cannon_scenarios.mjs PATH/TO/node_modules/cannon-es/dist/cannon-es.js'); process.exit(1); }
 const pkg = JSON.parse(readFileSync(dirname(dirname(entry)) + '/package.json', 'utf8'));
 const CANNON = await import(pathToFileURL(entry).href);
 console.log('cannon_es_version', pkg.version);
@@ -22,9 +24,9 @@ const v3 = (a) => new CANNON.Vec3(a[0], a[1], a[2]);
 const xyz = (v) => [v.x, v.y, v.z];
 const Y = v3([0, 1, 0]);
 
-function world(s) {
+function world(s, h = s.h) {
   const w = new CANNON.World();
-  w.gravity.set(0, 0, -GRAVITY);
+  w.gravity.set(0, 0, -s.gravity);
   const ground = new CANNON.Body({ mass: 0 });
   w.addBody(ground);
   const of = s.links ?? [s];
@@ -42,11 +44,11 @@ function world(s) {
     w.addBody(b);
     return b;
   });
-  if (!s.links) {
+  if (s.joint !== 'free' && !s.links) {
     const pivot = v3(s.com.map((c) => -c)); // the pivot in the body's frame
     w.addConstraint(s.joint === 'ball' ? new CANNON.PointToPointConstraint(ground, v3([0, 0, 0]), made[0], pivot)
       : new CANNON.HingeConstraint(ground, made[0], { pivotA: v3([0, 0, 0]), axisA: Y, pivotB: pivot, axisB: Y }));
-  } else {
+  } else if (s.links) {
     s.links.forEach((l, k) => {
       const parentCom = k === 0 ? [0, 0, 0] : s.links[k - 1].com;
       w.addConstraint(new CANNON.HingeConstraint(k === 0 ? ground : made[k - 1], made[k],
@@ -60,7 +62,10 @@ function world(s) {
   }
   const m = new CANNON.Mat3();
   return {
-    step: () => w.step(s.h),
+    step() {
+      if (s.central) made[0].force.set(...centralForce(s, xyz(made[0].position)));
+      w.step(h);
+    },
     frames: () => made.map((b) => {
       m.setRotationFromQuaternion(b.quaternion);
       return { rotation: Array.from(m.elements), x: xyz(b.position), v: xyz(b.velocity), w: xyz(b.angularVelocity) };
@@ -69,4 +74,7 @@ function world(s) {
   };
 }
 
-for (const [name, s] of Object.entries(scenarios)) longRun(`${name}_World.step`, s, world(s), 100000);
+for (const [name, s] of Object.entries(scenarios)) {
+  longRun(`${name}_World.step`, s, world(s), 100000);
+  await orderStudy(`${name}_World.step`, name, s, (h) => world(s, h));
+}

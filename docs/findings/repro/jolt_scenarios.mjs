@@ -1,22 +1,25 @@
-// jolt_joints.mjs -- the audit's jointed scenarios (jointed.mjs: the pendulums, the heavy top, the double
-// pendulum, chain5, the four-bar loop) in Jolt Physics (npm jolt-physics, single precision WASM), at its
-// solver's defaults (PhysicsSettings' mNumVelocitySteps 10, mNumPositionSteps 2), at 8 position steps and at 40
-// velocity steps: a dynamic Body a body, a 0.1 m sphere shape with its mass properties overridden
-// (EOverrideMassProperties_MassAndInertiaProvided: the mass, the principal moments as diag(I)), damping 0
-// (Jolt's defaults are 0.05), the angular velocity's clamp raised to 1e6, sleeping off, one object layer whose
-// pair is not enabled (nothing collides), started at its pose and velocity; a hinge a HingeConstraint (axis y,
-// normal axis x), a ball a PointConstraint, each in world space at the joint's point, to a static body at the
-// origin or between links; gravity 9.81 along -z. 1e5 steps of JoltInterface.Step(h, 1) (h 0.01; the heavy
-// top's 0.002). Printed for each: the largest anchor separation and loop separation (m) and the largest energy
-// change relative to the energy above the potential's floor (jointed.mjs's longRun).
-// Run: node jolt_joints.mjs PATH/TO/node_modules/jolt-physics/dist/jolt-physics.wasm-compat.js
+// jolt_scenarios.mjs -- the audit's rigid-body scenarios (scenarios.mjs: the pendulums, the heavy top, the double
+// pendulum, chain5, the four-bar loop, the free bodies) in Jolt Physics (npm jolt-physics, single precision WASM):
+// every scenario at its defaults (mApplyGyroscopicForce false, PhysicsSettings' mNumVelocitySteps 10 and
+// mNumPositionSteps 2), the jointed ones at 8 position steps and at 40 velocity steps, the free ones with the
+// gyroscopic force on. A dynamic Body a body, a 0.1 m sphere shape with its mass properties overridden
+// (EOverrideMassProperties_MassAndInertiaProvided: the mass, the principal moments as diag(I)), damping 0 (Jolt's
+// defaults are 0.05), the angular velocity's clamp raised to 1e6, sleeping off, one object layer whose pair is not
+// enabled (nothing collides), started at its pose and velocity; a hinge a HingeConstraint (axis y, normal axis x), a
+// ball a PointConstraint, each in world space at the joint's point, to a static body at the origin or between links;
+// the system's gravity the scenario's (9.81 along -z, or none). Kepler's central force by BodyInterface.AddForce before
+// each step. 1e5 steps of JoltInterface.Step(h, 1) (h 0.01; the heavy top's 0.002, the boxes' 0.0025, the projectile's
+// 1e-4). Printed for each: the largest anchor and loop separations (m), or angular momentum change, and energy change
+// (scenarios.mjs's longRun); a free body's or pendulum's order study besides (scenarios.mjs's orderStudy: each class's
+// error at tEnd in n = steps0 .. 16384 steps).
+// Run: node jolt_scenarios.mjs PATH/TO/node_modules/jolt-physics/dist/jolt-physics.wasm-compat.js
 // Output: lines "name value". Uses only Jolt and plain JavaScript.
 import { readFileSync } from 'fs';
 import { dirname } from 'path';
 import { pathToFileURL } from 'url';
-import { GRAVITY, bodiesAtStart, longRun, quaternionOf, rotationOf, scenarios } from './jointed.mjs';
+import { bodiesAtStart, centralForce, longRun, orderStudy, quaternionOf, rotationOf, scenarios } from './scenarios.mjs';
 const entry = process.argv[2];
-if (!entry) { console.error('usage: node jolt_joints.mjs PATH/TO/node_modules/jolt-physics/dist/jolt-physics.wasm-compat.js'); process.exit(1); }
+if (!entry) { console.error('usage: node jolt_scenarios.mjs PATH/TO/node_modules/jolt-physics/dist/jolt-physics.wasm-compat.js'); process.exit(1); }
 const pkg = JSON.parse(readFileSync(dirname(dirname(entry)) + '/package.json', 'utf8'));
 const Jolt = await (await import(pathToFileURL(entry).href)).default();
 console.log('jolt_version', pkg.version);
@@ -24,7 +27,7 @@ console.log('jolt_version', pkg.version);
 const xyz = (v) => [v.GetX(), v.GetY(), v.GetZ()];
 const quaternion = (q) => ({ x: q.GetX(), y: q.GetY(), z: q.GetZ(), w: q.GetW() });
 
-function world(s, velocitySteps, positionSteps) {
+function world(s, { velocitySteps, positionSteps, gyroscopic }, h = s.h) {
   const settings = new Jolt.JoltSettings();
   const pairs = new Jolt.ObjectLayerPairFilterTable(1); // no EnableCollision call: layer 0 vs 0 disabled
   const layers = new Jolt.BroadPhaseLayerInterfaceTable(1, 1);
@@ -34,7 +37,7 @@ function world(s, velocitySteps, positionSteps) {
   settings.mObjectVsBroadPhaseLayerFilter = new Jolt.ObjectVsBroadPhaseLayerFilterTable(layers, 1, pairs, 1);
   const jolt = new Jolt.JoltInterface(settings);
   const system = jolt.GetPhysicsSystem();
-  system.SetGravity(new Jolt.Vec3(0, 0, -GRAVITY));
+  system.SetGravity(new Jolt.Vec3(0, 0, -s.gravity));
   const physics = system.GetPhysicsSettings();
   physics.mNumVelocitySteps = velocitySteps;
   physics.mNumPositionSteps = positionSteps;
@@ -74,25 +77,41 @@ function world(s, velocitySteps, positionSteps) {
     c.mAngularDamping = 0;
     c.mMaxAngularVelocity = 1e6;
     c.mAllowSleeping = false;
+    c.mApplyGyroscopicForce = gyroscopic;
     const b = bodies.CreateBody(c);
     bodies.AddBody(b.GetID(), Jolt.EActivation_Activate);
     b.SetLinearVelocity(new Jolt.Vec3(...start.v));
     b.SetAngularVelocity(new Jolt.Vec3(...start.w));
     made.push(b);
-    (s.joint === 'ball' ? ball : hinge)(start.pivot, k === 0 ? fixed() : made[k - 1], b);
+    if (s.joint !== 'free') (s.joint === 'ball' ? ball : hinge)(start.pivot, k === 0 ? fixed() : made[k - 1], b);
   });
   if (s.loop) hinge(s.loop.anchor, made[made.length - 1], fixed());
+  const force = new Jolt.Vec3(0, 0, 0);
   return {
-    step: () => jolt.Step(s.h, 1),
+    step() {
+      if (s.central) {
+        force.Set(...centralForce(s, xyz(made[0].GetCenterOfMassPosition())));
+        bodies.AddForce(made[0].GetID(), force, Jolt.EActivation_Activate);
+      }
+      jolt.Step(h, 1);
+    },
     frames: () => made.map((b) => ({ rotation: rotationOf(quaternion(b.GetRotation())), x: xyz(b.GetCenterOfMassPosition()),
                                      v: xyz(b.GetLinearVelocity()), w: xyz(b.GetAngularVelocity()) })),
     free: () => Jolt.destroy(jolt),
   };
 }
 
-for (const [setting, velocitySteps, positionSteps] of [['default', 10, 2], ['position_steps_8', 10, 8], ['velocity_steps_40', 40, 2]])
+const settings = [
+  ['default', { velocitySteps: 10, positionSteps: 2, gyroscopic: false }, () => true],
+  ['position_steps_8', { velocitySteps: 10, positionSteps: 8, gyroscopic: false }, (s) => s.joint !== 'free'],
+  ['velocity_steps_40', { velocitySteps: 40, positionSteps: 2, gyroscopic: false }, (s) => s.joint !== 'free'],
+  ['gyroscopic', { velocitySteps: 10, positionSteps: 2, gyroscopic: true }, (s) => s.joint === 'free'],
+];
+for (const [setting, chosen, runs] of settings)
   for (const [name, s] of Object.entries(scenarios)) {
-    const w = world(s, velocitySteps, positionSteps);
+    if (!runs(s)) continue;
+    const w = world(s, chosen);
     longRun(`${name}_${setting}`, s, w, 100000);
     w.free();
+    await orderStudy(`${name}_${setting}`, name, s, (h) => world(s, chosen, h));
   }

@@ -1,19 +1,21 @@
-// rapier_joints.mjs -- the audit's jointed scenarios (jointed.mjs: the pendulums, the heavy top, the double
-// pendulum, chain5, the four-bar loop) in Rapier (@dimforge/rapier3d-compat, single precision WASM), each at
-// World.numSolverIterations 4 (its default) and 16: a dynamic RigidBody a body, its mass and principal moments
-// by setAdditionalMassProperties (centre of mass at the body's origin, no collider), damping 0, sleeping off,
-// started at its pose and velocity; a hinge a JointData.revolute (axis y), a ball a JointData.spherical, each an
-// impulse joint to a fixed body at the origin or between links, their anchors in each body's frame; gravity
-// 9.81 along -z. 1e5 steps of world.step() with world.timestep = h (0.01; the heavy top's 0.002). Printed for each: the largest anchor
-// separation and loop separation (m) and the largest energy change relative to the energy above the
-// potential's floor (jointed.mjs's longRun).
-// Run: node rapier_joints.mjs PATH/TO/node_modules/@dimforge/rapier3d-compat
+// rapier_scenarios.mjs -- the audit's rigid-body scenarios (scenarios.mjs: the pendulums, the heavy top, the double
+// pendulum, chain5, the four-bar loop, the free bodies) in Rapier (@dimforge/rapier3d-compat, single precision WASM),
+// each at World.numSolverIterations 4 (its default) and 16: a dynamic RigidBody a body, its mass and principal moments
+// by setAdditionalMassProperties (centre of mass at the body's origin, no collider), damping 0, sleeping off, started
+// at its pose and velocity; a hinge a JointData.revolute (axis y), a ball a JointData.spherical, each an impulse joint
+// to a fixed body at the origin or between links, their anchors in each body's frame; the World's gravity the
+// scenario's (9.81 along -z, or none). Kepler's central force by addForce before each step (its forces reset first).
+// 1e5 steps of world.step() with world.timestep = h (0.01; the heavy top's 0.002, the boxes' 0.0025, the projectile's
+// 1e-4). Printed for each: the largest anchor and loop separations (m), or angular momentum change, and energy change
+// (scenarios.mjs's longRun); a free body's or pendulum's order study besides (scenarios.mjs's orderStudy: each class's
+// error at tEnd in n = steps0 .. 16384 steps).
+// Run: node rapier_scenarios.mjs PATH/TO/node_modules/@dimforge/rapier3d-compat
 // Output: lines "name value". Uses only Rapier and plain JavaScript.
 import { readFileSync } from 'fs';
 import { pathToFileURL } from 'url';
-import { GRAVITY, bodiesAtStart, longRun, quaternionOf, rotationOf, scenarios, sub } from './jointed.mjs';
+import { bodiesAtStart, centralForce, longRun, orderStudy, quaternionOf, rotationOf, scenarios, sub } from './scenarios.mjs';
 const dir = process.argv[2];
-if (!dir) { console.error('usage: node rapier_joints.mjs PATH/TO/node_modules/@dimforge/rapier3d-compat'); process.exit(1); }
+if (!dir) { console.error('usage: node rapier_scenarios.mjs PATH/TO/node_modules/@dimforge/rapier3d-compat'); process.exit(1); }
 const pkg = JSON.parse(readFileSync(dir + '/package.json', 'utf8'));
 const RAPIER = (await import(pathToFileURL(dir + '/dist/rapier.mjs').href)).default;
 await RAPIER.init();
@@ -23,9 +25,8 @@ const v3 = (a) => ({ x: a[0], y: a[1], z: a[2] });
 const xyz = (v) => [v.x, v.y, v.z];
 const Y = v3([0, 1, 0]);
 
-function world(s, iterations) {
-  const h = s.h;
-  const w = new RAPIER.World(v3([0, 0, -GRAVITY]));
+function world(s, iterations, h = s.h) {
+  const w = new RAPIER.World(v3([0, 0, -s.gravity]));
   w.numSolverIterations = iterations;
   const ground = w.createRigidBody(RAPIER.RigidBodyDesc.fixed());
   const bodies = s.links ?? [s];
@@ -42,10 +43,10 @@ function world(s, iterations) {
         .setCanSleep(false),
     ));
   const joint = (data, a, b) => w.createImpulseJoint(data, a, b, true);
-  if (!s.links) {
+  if (s.joint !== 'free' && !s.links) {
     const pivot = v3(s.com.map((c) => -c)); // the pivot in the body's frame
     joint(s.joint === 'ball' ? RAPIER.JointData.spherical(v3([0, 0, 0]), pivot) : RAPIER.JointData.revolute(v3([0, 0, 0]), pivot, Y), ground, made[0]);
-  } else {
+  } else if (s.links) {
     s.links.forEach((l, k) => {
       const parentCom = k === 0 ? [0, 0, 0] : s.links[k - 1].com;
       joint(RAPIER.JointData.revolute(v3(sub(l.hinge, parentCom)), v3(l.com.map((c) => -c)), Y), k === 0 ? ground : made[k - 1], made[k]);
@@ -56,7 +57,14 @@ function world(s, iterations) {
     }
   }
   return {
-    step() { w.timestep = h; w.step(); },
+    step() {
+      if (s.central) {
+        made[0].resetForces(true);
+        made[0].addForce(v3(centralForce(s, xyz(made[0].translation()))), true);
+      }
+      w.timestep = h;
+      w.step();
+    },
     frames: () => made.map((b) => ({ rotation: rotationOf(b.rotation()), x: xyz(b.translation()), v: xyz(b.linvel()), w: xyz(b.angvel()) })),
     free: () => w.free(),
   };
@@ -67,4 +75,5 @@ for (const [setting, iterations] of [['impulse_joints', 4], ['impulse_joints_16_
     const w = world(s, iterations);
     longRun(`${name}_${setting}`, s, w, 100000);
     w.free();
+    await orderStudy(`${name}_${setting}`, name, s, (h) => world(s, iterations, h));
   }
