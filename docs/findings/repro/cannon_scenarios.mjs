@@ -13,7 +13,7 @@
 import { readFileSync } from 'fs';
 import { dirname } from 'path';
 import { pathToFileURL } from 'url';
-import { bodiesAtStart, centralForce, longRun, orderStudy, quaternionOf, scenarios, sub } from './scenarios.mjs';
+import { SHAPE_MASS, bodiesAtStart, centralForce, gravitation, hullPoints, longRun, orderStudy, parts, shapeLines, quaternionOf, scenarios, sub } from './scenarios.mjs';
 const entry = process.argv[2];
 if (!entry) { console.error('usage: node cannon_scenarios.mjs PATH/TO/node_modules/cannon-es/dist/cannon-es.js'); process.exit(1); }
 const pkg = JSON.parse(readFileSync(dirname(dirname(entry)) + '/package.json', 'utf8'));
@@ -29,7 +29,7 @@ function world(s, h = s.h) {
   w.gravity.set(0, 0, -s.gravity);
   const ground = new CANNON.Body({ mass: 0 });
   w.addBody(ground);
-  const of = s.links ?? [s];
+  const of = parts(s);
   const made = bodiesAtStart(s).map((start, k) => {
     const b = new CANNON.Body({ mass: of[k].mass, linearDamping: 0, angularDamping: 0 });
     const [i1, i2, i3] = of[k].inertia;
@@ -64,6 +64,10 @@ function world(s, h = s.h) {
   return {
     step() {
       if (s.central) made[0].force.set(...centralForce(s, xyz(made[0].position)));
+      for (const [a, c, f] of s.gravitation ? gravitation(s, made.map((b) => xyz(b.position))) : []) {
+        made[a].force.vadd(v3(f), made[a].force);
+        made[c].force.vsub(v3(f), made[c].force);
+      }
       w.step(h);
     },
     frames: () => made.map((b) => {
@@ -78,3 +82,17 @@ for (const [name, s] of Object.entries(scenarios)) {
   longRun(`${name}_World.step`, s, world(s), 100000);
   await orderStudy(`${name}_World.step`, name, s, (h) => world(s, h));
 }
+
+// The shapes: a Body of mass 2 with the shape added (Body.addShape computes Body.inertia); the cylinder a Cylinder of
+// 32 segments along its y; the hull a ConvexPolyhedron of the tetrahedron's faces. No capsule, no cone.
+shapeLines((name, [a, b, c]) => {
+  const body = new CANNON.Body({ mass: SHAPE_MASS });
+  if (name === 'box') body.addShape(new CANNON.Box(v3([a / 2, b / 2, c / 2])));
+  else if (name === 'sphere') body.addShape(new CANNON.Sphere(a));
+  else if (name === 'cylinder') body.addShape(new CANNON.Cylinder(a, a, b, 32));
+  else if (name === 'two_spheres') for (const x of [b, -b]) body.addShape(new CANNON.Sphere(a), v3([x, 0, 0]));
+  else if (name === 'convex_hull')
+    body.addShape(new CANNON.ConvexPolyhedron({ vertices: hullPoints([a, b, c]).map(v3), faces: [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]] }));
+  else return null;
+  return xyz(body.inertia);
+});

@@ -15,7 +15,7 @@
 // Output: lines "name value". Uses only Havok and plain JavaScript.
 import { readFileSync } from 'fs';
 import { pathToFileURL } from 'url';
-import { bodiesAtStart, centralForce, longRun, orderStudy, quaternionOf, rotateBack, rotationOf, scenarios, sub } from './scenarios.mjs';
+import { SHAPE_MASS, bodiesAtStart, centralForce, gravitation, hullPoints, longRun, orderStudy, parts, shapeLines, quaternionOf, rotateBack, rotationOf, scenarios, sub } from './scenarios.mjs';
 const dir = process.argv[2];
 if (!dir) { console.error('usage: node havok_scenarios.mjs PATH/TO/node_modules/@babylonjs/havok'); process.exit(1); }
 const pkg = JSON.parse(readFileSync(dir + '/package.json', 'utf8'));
@@ -70,7 +70,7 @@ async function world(s, h = s.h, instance = null) {
     for (const axis of locked) ck(H.HP_Constraint_SetAxisMode(c, axis, H.ConstraintAxisLimitMode.LOCKED));
     ck(H.HP_Constraint_SetEnabled(c, 1));
   };
-  const of = s.links ?? [s], made = [];
+  const of = parts(s), made = [];
   // Each body made, then its joint to its parent (the static body made at the first joint, after the first body).
   bodiesAtStart(s).forEach((start, k) => {
     const b = make(true, of[k].mass, of[k].inertia, start.rotation, start.x, start.v, start.w);
@@ -81,9 +81,13 @@ async function world(s, h = s.h, instance = null) {
   return {
     step() {
       ck(H.HP_World_SetIdealStepTime(w, h));
-      if (s.central) { // Havok takes no force: the impulse F h at the centre of mass
-        const x = ck(H.HP_Body_GetQTransform(made[0].id))[0];
-        ck(H.HP_Body_ApplyImpulse(made[0].id, x, centralForce(s, x).map((f) => f * h)));
+      // Havok takes no force: the impulse F h at the centre of mass.
+      const at = (k) => ck(H.HP_Body_GetQTransform(made[k].id))[0];
+      const push = (k, f) => ck(H.HP_Body_ApplyImpulse(made[k].id, at(k), f.map((x) => x * h)));
+      if (s.central) push(0, centralForce(s, at(0)));
+      for (const [a, c, f] of s.gravitation ? gravitation(s, made.map((b, k) => at(k))) : []) {
+        push(a, f);
+        push(c, f.map((x) => -x));
       }
       ck(H.HP_World_Step(w, h));
     },
@@ -110,4 +114,28 @@ for (const [name, s] of Object.entries(scenarios)) {
   const w = await world(scenarios.four_bar, 0.01, H);
   longRun('four_bar_after_five_worlds_step', scenarios.four_bar, w, 100000);
   w.free();
+}
+
+// The shapes: HP_Shape_BuildMassProperties (its inertia "for mass of 1") times 2; the axis (z) the cylinder's and the
+// capsule's; the hull's points in the WebAssembly heap (_malloc), as its declarations ask. No cone.
+{
+  const H = await HavokPhysics({ wasmBinary });
+  RESULT_OK = H.Result.RESULT_OK;
+  shapeLines((name, [a, b, c]) => {
+    let shape;
+    if (name === 'box') shape = ck(H.HP_Shape_CreateBox([0, 0, 0], [0, 0, 0, 1], [a, b, c]));
+    else if (name === 'sphere') shape = ck(H.HP_Shape_CreateSphere([0, 0, 0], a));
+    else if (name === 'cylinder') shape = ck(H.HP_Shape_CreateCylinder([0, 0, -b / 2], [0, 0, b / 2], a));
+    else if (name === 'capsule') shape = ck(H.HP_Shape_CreateCapsule([0, 0, -b / 2], [0, 0, b / 2], a));
+    else if (name === 'two_spheres') {
+      shape = ck(H.HP_Shape_CreateContainer());
+      for (const x of [b, -b]) ck(H.HP_Shape_AddChild(shape, ck(H.HP_Shape_CreateSphere([0, 0, 0], a)), [[x, 0, 0], [0, 0, 0, 1], [1, 1, 1]]));
+    } else if (name === 'convex_hull') {
+      const points = hullPoints([a, b, c]).flat(), at = H._malloc(4 * points.length);
+      new Float32Array(H.HEAPU8.buffer, at, points.length).set(points);
+      shape = ck(H.HP_Shape_CreateConvexHull(at, points.length / 3));
+      H._free(at);
+    } else return null;
+    return ck(H.HP_Shape_BuildMassProperties(shape))[2].map((i) => i * SHAPE_MASS);
+  });
 }

@@ -17,7 +17,7 @@
 import { readFileSync } from 'fs';
 import { dirname } from 'path';
 import { pathToFileURL } from 'url';
-import { bodiesAtStart, centralForce, longRun, orderStudy, quaternionOf, rotationOf, scenarios } from './scenarios.mjs';
+import { SHAPE_MASS, bodiesAtStart, centralForce, gravitation, hullPoints, longRun, orderStudy, parts, shapeLines, quaternionOf, rotationOf, scenarios } from './scenarios.mjs';
 const entry = process.argv[2];
 if (!entry) { console.error('usage: node jolt_scenarios.mjs PATH/TO/node_modules/jolt-physics/dist/jolt-physics.wasm-compat.js'); process.exit(1); }
 const pkg = JSON.parse(readFileSync(dirname(dirname(entry)) + '/package.json', 'utf8'));
@@ -65,7 +65,7 @@ function world(s, { velocitySteps, positionSteps, gyroscopic }, h = s.h) {
     c.mPoint1 = c.mPoint2 = new Jolt.RVec3(...point);
     system.AddConstraint(c.Create(a, b));
   };
-  const of = s.links ?? [s], made = [];
+  const of = parts(s), made = [];
   // Each body made, then its joint to its parent (the static body made at the first joint, after the first body).
   bodiesAtStart(s).forEach((start, k) => {
     const q = quaternionOf(start.rotation);
@@ -89,9 +89,14 @@ function world(s, { velocitySteps, positionSteps, gyroscopic }, h = s.h) {
   const force = new Jolt.Vec3(0, 0, 0);
   return {
     step() {
-      if (s.central) {
-        force.Set(...centralForce(s, xyz(made[0].GetCenterOfMassPosition())));
-        bodies.AddForce(made[0].GetID(), force, Jolt.EActivation_Activate);
+      const push = (k, f) => {
+        force.Set(...f);
+        bodies.AddForce(made[k].GetID(), force, Jolt.EActivation_Activate);
+      };
+      if (s.central) push(0, centralForce(s, xyz(made[0].GetCenterOfMassPosition())));
+      for (const [a, c, f] of s.gravitation ? gravitation(s, made.map((b) => xyz(b.GetCenterOfMassPosition()))) : []) {
+        push(a, f);
+        push(c, f.map((x) => -x));
       }
       jolt.Step(h, 1);
     },
@@ -115,3 +120,32 @@ for (const [setting, chosen, runs] of settings)
     w.free();
     await orderStudy(`${name}_${setting}`, name, s, (h) => world(s, chosen, h));
   }
+
+// The shapes: Shape.GetMassProperties() (about the centre of mass, at Jolt's density) scaled to mass 2; the axis (z)
+// Jolt's y for the cylinder, the capsule and the cone (a TaperedCylinderShape of top radius 0); convex radius 0 where
+// a shape takes one.
+const created = (settings) => {
+  const result = settings.Create();
+  if (result.HasError()) throw new Error(result.GetError().c_str());
+  return result.Get();
+};
+shapeLines((name, [a, b, c]) => {
+  let shape;
+  if (name === 'box') shape = new Jolt.BoxShape(new Jolt.Vec3(a / 2, b / 2, c / 2), 0);
+  else if (name === 'sphere') shape = new Jolt.SphereShape(a);
+  else if (name === 'cylinder') shape = new Jolt.CylinderShape(b / 2, a, 0);
+  else if (name === 'capsule') shape = new Jolt.CapsuleShape(b / 2, a);
+  else if (name === 'cone') shape = created(new Jolt.TaperedCylinderShapeSettings(b / 2, 0, a, 0));
+  else if (name === 'convex_hull') {
+    const hull = new Jolt.ConvexHullShapeSettings();
+    for (const p of hullPoints([a, b, c])) hull.mPoints.push_back(new Jolt.Vec3(...p));
+    hull.mMaxConvexRadius = 0;
+    shape = created(hull);
+  } else if (name === 'two_spheres') {
+    const compound = new Jolt.StaticCompoundShapeSettings(), ball = new Jolt.SphereShapeSettings(a);
+    for (const x of [b, -b]) compound.AddShape(new Jolt.Vec3(x, 0, 0), new Jolt.Quat(0, 0, 0, 1), ball, 0);
+    shape = created(compound);
+  } else return null;
+  const p = shape.GetMassProperties();
+  return xyz(p.mInertia.GetDiagonal3()).map((x) => (x * SHAPE_MASS) / p.mMass);
+});

@@ -3,11 +3,14 @@
 // body_iquat, against the tensor given, and the mass matrix of a hinge about z through the
 // centre of mass, which is I_zz exactly. The setup of mujoco_fullinertia.c (Debian's MuJoCo
 // 2.2.2), in JavaScript; uses the package only. And the mass and largest moment MuJoCo gives a
-// body whose box geom carries no mass (its density, 1000 unless set).
+// body whose box geom carries no mass (its density, 1000 unless set); and the audit's shapes
+// (scenarios.mjs), each a body of one geom of mass 2 (two spheres of 1; the hull a mesh), the
+// largest relative error of mjModel.body_inertia against the exact moments.
 //
 // Run: node mujoco_wasm_fullinertia.mjs PATH/TO/node_modules/@mujoco/mujoco/mujoco.js
 // Prints: lines "name value" (see ci/findings).
 import { pathToFileURL } from 'node:url';
+import { SHAPE_MASS, hullPoints, shapeLines } from './scenarios.mjs';
 
 const { default: loadMujoco } = await import(pathToFileURL(process.argv[2]).href);
 const mj = await loadMujoco();
@@ -102,3 +105,21 @@ console.log(`random_above_1e-12 ${errors.filter((e) => e > 1e-12).length}`);
   console.log(`box_alone_moment_max ${Math.max(...box.body_inertia.subarray(3, 6)).toExponential(6)}`);
   box.delete();
 }
+shapeLines((name, [a, b, c]) => {
+  const mass = (m) => ` mass="${m}"`, vec = (v) => v.join(' ');
+  const geoms = {
+    box: `<geom type="box" size="${vec([a / 2, b / 2, c / 2])}"${mass(SHAPE_MASS)}/>`,
+    sphere: `<geom type="sphere" size="${a}"${mass(SHAPE_MASS)}/>`,
+    cylinder: `<geom type="cylinder" size="${vec([a, b / 2])}"${mass(SHAPE_MASS)}/>`,
+    capsule: `<geom type="capsule" size="${vec([a, b / 2])}"${mass(SHAPE_MASS)}/>`,
+    ellipsoid: `<geom type="ellipsoid" size="${vec([a, b, c])}"${mass(SHAPE_MASS)}/>`,
+    two_spheres: [b, -b].map((x) => `<geom type="sphere" size="${a}" pos="${x} 0 0"${mass(SHAPE_MASS / 2)}/>`).join(''),
+    convex_hull: `<geom type="mesh" mesh="hull"${mass(SHAPE_MASS)}/>`,
+  }[name];
+  if (!geoms) return null; // no cone
+  const asset = name === 'convex_hull' ? `<asset><mesh name="hull" vertex="${vec(hullPoints([a, b, c]).flat())}"/></asset>` : '';
+  const model = mj.MjModel.from_xml_string(`<mujoco>${asset}<worldbody><body><freejoint/>${geoms}</body></worldbody></mujoco>`);
+  const moments = Array.from(model.body_inertia.subarray(3, 6));
+  model.delete();
+  return moments;
+});

@@ -13,7 +13,7 @@
 // Output: lines "name value". Uses only Rapier and plain JavaScript.
 import { readFileSync } from 'fs';
 import { pathToFileURL } from 'url';
-import { bodiesAtStart, centralForce, longRun, orderStudy, quaternionOf, rotationOf, scenarios, sub } from './scenarios.mjs';
+import { SHAPE_MASS, bodiesAtStart, centralForce, gravitation, hullPoints, longRun, orderStudy, parts, shapeLines, quaternionOf, rotationOf, scenarios, sub } from './scenarios.mjs';
 const dir = process.argv[2];
 if (!dir) { console.error('usage: node rapier_scenarios.mjs PATH/TO/node_modules/@dimforge/rapier3d-compat'); process.exit(1); }
 const pkg = JSON.parse(readFileSync(dir + '/package.json', 'utf8'));
@@ -29,7 +29,7 @@ function world(s, iterations, h = s.h) {
   const w = new RAPIER.World(v3([0, 0, -s.gravity]));
   w.numSolverIterations = iterations;
   const ground = w.createRigidBody(RAPIER.RigidBodyDesc.fixed());
-  const bodies = s.links ?? [s];
+  const bodies = parts(s);
   const made = bodiesAtStart(s).map((start, k) =>
     w.createRigidBody(
       RAPIER.RigidBodyDesc.dynamic()
@@ -58,9 +58,11 @@ function world(s, iterations, h = s.h) {
   }
   return {
     step() {
-      if (s.central) {
-        made[0].resetForces(true);
-        made[0].addForce(v3(centralForce(s, xyz(made[0].translation()))), true);
+      if (s.central || s.gravitation) for (const b of made) b.resetForces(true);
+      if (s.central) made[0].addForce(v3(centralForce(s, xyz(made[0].translation()))), true);
+      for (const [a, c, f] of s.gravitation ? gravitation(s, made.map((b) => xyz(b.translation()))) : []) {
+        made[a].addForce(v3(f), true);
+        made[c].addForce(v3(f.map((x) => -x)), true);
       }
       w.timestep = h;
       w.step();
@@ -77,3 +79,25 @@ for (const [setting, iterations] of [['impulse_joints', 4], ['impulse_joints_16_
     w.free();
     await orderStudy(`${name}_${setting}`, name, s, (h) => world(s, iterations, h));
   }
+
+// The shapes, each a dynamic body with the shape's collider(s) of mass 2 (ColliderDesc.setMass; the two spheres 1
+// each), its principal moments RigidBody.principalInertia(); the axis (z) Rapier's y for the cylinder, the capsule and
+// the cone.
+shapeLines((name, [a, b, c]) => {
+  const w = new RAPIER.World(v3([0, 0, 0]));
+  try {
+    const body = w.createRigidBody(RAPIER.RigidBodyDesc.dynamic());
+    const collider = (desc, at) => w.createCollider(desc.setMass(at ? SHAPE_MASS / 2 : SHAPE_MASS).setTranslation(...(at ?? [0, 0, 0])), body);
+    if (name === 'box') collider(RAPIER.ColliderDesc.cuboid(a / 2, b / 2, c / 2));
+    else if (name === 'sphere') collider(RAPIER.ColliderDesc.ball(a));
+    else if (name === 'cylinder') collider(RAPIER.ColliderDesc.cylinder(b / 2, a));
+    else if (name === 'capsule') collider(RAPIER.ColliderDesc.capsule(b / 2, a));
+    else if (name === 'cone') collider(RAPIER.ColliderDesc.cone(b / 2, a));
+    else if (name === 'two_spheres') for (const x of [b, -b]) collider(RAPIER.ColliderDesc.ball(a), [x, 0, 0]);
+    else if (name === 'convex_hull') collider(RAPIER.ColliderDesc.convexHull(new Float32Array(hullPoints([a, b, c]).flat())));
+    else return null;
+    return xyz(body.principalInertia());
+  } finally {
+    w.free();
+  }
+});

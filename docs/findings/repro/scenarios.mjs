@@ -1,6 +1,7 @@
 // scenarios.mjs -- the audit's rigid-body scenarios in plain JavaScript, for the engines' reproducers
 // (rapier_scenarios.mjs, jolt_scenarios.mjs, havok_scenarios.mjs, cannon_scenarios.mjs): what each body is and
-// where it starts, and what is measured of a long run and of an order study. Uses nothing but JavaScript.
+// where it starts, and what is measured of a long run and of an order study; the audit's shapes and their exact
+// moments of inertia. Uses nothing but JavaScript.
 //
 // The scenarios, their numbers as the audit states them (decimal, 17 digits). Jointed, under gravity 9.81 along
 // -z, every hinge about the world's y axis, all released from rest but the heavy top:
@@ -18,6 +19,8 @@
 // in the world's); com: its centre of mass in its own frame (a one-body scenario's: from its pivot).
 // Free, without gravity, each body's principal axes its frame's, turned by rotation0 (row-major), its world
 // angular velocity omega0, its centre of mass at position0 moving at velocity0:
+// - three_body: three bodies of 1 kg (moments 1e-3) under their mutual gravitation G = 1 (set before each step), on
+//   the figure-eight choreography.
 // - projectile: a body of 1 kg thrown from the origin at (1, 0.5, 3) under gravity 9.81 (its step 1e-4);
 //   kepler: a point mass of 1 kg under the force -x / |x|^3 (set before each step), from (0.5, 0, 0) at
 //   (0, sqrt 3, 0): an ellipse of a = 1, e = 0.5.
@@ -25,11 +28,11 @@
 //   moments of a 10 kg box, spun near its middle axis; its step 0.0025), free_symmetric_top (moments (1, 1, 2)).
 // - body_1_0 .. body_1_7: the audit's random free bodies of seed 1 (--engine-bodies 8 --seed 1).
 // Their order studies run to tEnd in n = steps0, 2 steps0, .. 16384 steps, as the pendulums' (to 2 s, released at
-// theta0).
+// theta0) and the chains' (to 2 s; chain5's to 1 s).
 export const GRAVITY = 9.8100000000000005;
 
 const free = (h, tEnd, mass, inertia, omega0, rotation0 = [1, 0, 0, 0, 1, 0, 0, 0, 1], position0 = [0, 0, 0], velocity0 = [0, 0, 0]) =>
-  ({ h, tEnd, steps0: 32, gravity: 0, central: 0, joint: 'free', mass, inertia, omega0, rotation0, position0, velocity0, com: [0, 0, 0] });
+  ({ h, tEnd, steps0: 32, gravity: 0, central: 0, gravitation: 0, joint: 'free', mass, inertia, omega0, rotation0, position0, velocity0, com: [0, 0, 0] });
 
 const identity = [1, 0, 0, 0, 1, 0, 0, 0, 1];
 const bar = (mass, length, angle0, first) => ({
@@ -53,12 +56,19 @@ export const scenarios = {
     gravity: GRAVITY, h: 0.002, joint: 'ball', mass: 1, inertia: [0.05, 0.05, 0.1], com: [0, 0, 0.5], omega0: [18.610969897084864, 0, 35.412537899796675],
     rotation0: [0.87758256189037276, 0, 0.47942553860420301, 0, 1, 0, -0.47942553860420301, 0, 0.87758256189037276],
   },
-  double_pendulum: { h: 0.01, gravity: GRAVITY, links: [bar(1, 1, 0.5, true), bar(1, 1, 0.5, false)] },
-  chain5: { h: 0.01, gravity: GRAVITY, links: [0, 1, 2, 3, 4].map((k) => bar(0.5, 0.5, 0.25, k === 0)) },
+  double_pendulum: { h: 0.01, tEnd: 2, steps0: 32, gravity: GRAVITY, links: [bar(1, 1, 0.5, true), bar(1, 1, 0.5, false)] },
+  chain5: { h: 0.01, tEnd: 1, steps0: 32, gravity: GRAVITY, links: [0, 1, 2, 3, 4].map((k) => bar(0.5, 0.5, 0.25, k === 0)) },
   four_bar: {
-    h: 0.01, gravity: GRAVITY,
+    h: 0.01, tEnd: 2, steps0: 32, gravity: GRAVITY,
     links: [crankBar(1, [0, 0, 0], 1), crankBar(2, [1, 0, 0], -2.3447685306996595), crankBar(1.5, [2, 0, 0], 2.1755201159650825)],
     loop: { point: [1.5, 0, 0], anchor: [2, 0, 0] },
+  },
+  three_body: {
+    h: 0.01, tEnd: 2, steps0: 32, gravity: 0, central: 0, gravitation: 1, joint: 'free', bodies: [
+      [[0.97000436000000001, -0.24308753, 0], [0.46620368499999998, 0.43236573, -0]],
+      [[-0.97000436000000001, 0.24308753, -0], [0.46620368499999998, 0.43236573, -0]],
+      [[0, 0, 0], [-0.93240736999999996, -0.86473146000000001, 0]],
+    ].map(([position0, velocity0]) => ({ mass: 1, inertia: [0.001, 0.001, 0.001], com: [0, 0, 0], position0, velocity0 })),
   },
   projectile: { ...free(1e-4, 1, 1, [1, 1, 1], [0, 0, 0], undefined, [0, 0, 0], [1, 0.5, 3]), gravity: GRAVITY, steps0: 16, momentum: false },
   kepler: { ...free(0.01, 5, 1, [1e-3, 1e-3, 1e-3], [0, 0, 0], undefined, [0.5, 0, 0], [0, Math.sqrt(3), 0]), central: 1, steps0: 64 },
@@ -150,9 +160,24 @@ export function rotationOf({ x, y, z, w }) {
   ];
 }
 
+/** The scenario's bodies: a chain's links, the free bodies, or the one body. */
+export const parts = (s) => s.links ?? s.bodies ?? [s];
+
+/** The mutual gravitation of free bodies at positions x, pair by pair as [a, c, f]: f on a, -f on c. */
+export function gravitation(s, x) {
+  const out = [], m = parts(s).map((b) => b.mass);
+  for (let a = 0; a < x.length; ++a)
+    for (let c = a + 1; c < x.length; ++c) {
+      const r = sub(x[c], x[a]), d = Math.hypot(...r);
+      out.push([a, c, r.map((ri) => ((s.gravitation * m[a] * m[c]) / (d * d * d)) * ri)]);
+    }
+  return out;
+}
+
 /** Each body at the start, in the world: {rotation, x (its centre of mass), v (that point's velocity), w (the
  * world angular velocity), pivot (its joint's point in the world)}. */
 export function bodiesAtStart(s) {
+  if (s.bodies) return s.bodies.map((b) => ({ rotation: identity, x: b.position0, v: b.velocity0, w: [0, 0, 0] }));
   if (s.joint === 'free') return [{ rotation: s.rotation0, x: s.position0, v: s.velocity0, w: s.omega0 }];
   if (!s.links) {
     const x = rotate(s.rotation0, s.com);
@@ -188,8 +213,10 @@ export function potentialFloor(s) {
  * from its two sides (the pivot at the origin, or the hinge on the parent's frame); the loop's (the rocker's end
  * against its ground point). */
 export function measure(s, frames) {
-  const bodies = s.links ?? [s];
+  const bodies = parts(s);
   let energy = 0, anchor = 0, loop = 0, momentum = [0, 0, 0];
+  for (const [a, c] of s.gravitation ? gravitation(s, frames.map((f) => f.x)) : [])
+    energy -= (s.gravitation * bodies[a].mass * bodies[c].mass) / Math.hypot(...sub(frames[c].x, frames[a].x));
   frames.forEach((f, k) => {
     const b = bodies[k], wb = rotateBack(f.rotation, f.w);
     energy += (b.mass * (f.v[0] ** 2 + f.v[1] ** 2 + f.v[2] ** 2)) / 2 +
@@ -214,7 +241,8 @@ export function measure(s, frames) {
  * its energy change relative to the energy it can exchange, E0 above the potential's floor ("energy"). */
 export function longRun(prefix, s, world, n) {
   const m0 = measure(s, world.frames());
-  const scale = s.joint === 'free' ? Math.abs(m0.energy) : m0.energy - potentialFloor(s), l0 = Math.hypot(...m0.momentum);
+  // (1 where |E0| or |L0| is 0, as the audit: the figure-eight's angular momentum)
+  const scale = s.joint === 'free' ? Math.abs(m0.energy) || 1 : m0.energy - potentialFloor(s), l0 = Math.hypot(...m0.momentum) || 1;
   let anchor = 0, loop = 0, energy = 0, momentum = 0;
   for (let k = 1; k <= n; ++k) {
     world.step();
@@ -270,6 +298,78 @@ function keplerOrbit(t) {
   return { position: [Math.cos(E) - e, b * Math.sin(E), 0], velocity: [-Math.sin(E) * rate, b * Math.cos(E) * rate, 0] };
 }
 
+/** Gaussian elimination with partial pivoting: x with A x = b. */
+function solve(A, b) {
+  const n = b.length, M = A.map((row, i) => [...row, b[i]]);
+  for (let c = 0; c < n; ++c) {
+    let p = c;
+    for (let r = c + 1; r < n; ++r) if (Math.abs(M[r][c]) > Math.abs(M[p][c])) p = r;
+    [M[c], M[p]] = [M[p], M[c]];
+    for (let r = c + 1; r < n; ++r) {
+      const f = M[r][c] / M[c][c];
+      for (let k = c; k <= n; ++k) M[r][k] -= f * M[c][k];
+    }
+  }
+  const x = new Array(n).fill(0);
+  for (let r = n - 1; r >= 0; --r) {
+    let v = M[r][n];
+    for (let k = r + 1; k < n; ++k) v -= M[r][k] * x[k];
+    x[r] = v / M[r][r];
+  }
+  return x;
+}
+
+/** A planar chain's motion (the links' absolute angles phi about y and their rates) at t, by the classical RK4 in
+ * steps of at most h on d'Alembert's equations: link k's centre of mass c_k = sum_{j<k} R(phi_j) hinge_{j+1} +
+ * R(phi_k) com_k in the (x, z) plane, a_kj = dc_k/dphi_j = R'(phi_j) d_kj, so M phi'' = Q with M_ij = sum_k m_k
+ * a_ki . a_kj + delta_ij I_i and Q_i = sum_k m_k a_ki . (sum_j R(phi_j) d_kj phi_j'^2 - g e_z) (R'' = -R); a loop
+ * (the four-bar's rocker end held at its anchor) adds J phi'' = sum_j R(phi_j) e_j phi_j'^2 with its multipliers. */
+function chainReference(s, t, h) {
+  const L = s.links, n = L.length;
+  const turn = (phi, [x, , z]) => [Math.cos(phi) * x + Math.sin(phi) * z, -Math.sin(phi) * x + Math.cos(phi) * z];
+  const dturn = (phi, [x, , z]) => [-Math.sin(phi) * x + Math.cos(phi) * z, -Math.cos(phi) * x - Math.sin(phi) * z];
+  const arm = (k, j) => (j < k ? L[j + 1].hinge : j === k ? L[k].com : null); // d_kj
+  const loopArm = (j) => (j < n - 1 ? L[j + 1].hinge : s.loop.point);
+  const acceleration = (phi, rate) => {
+    const size = n + (s.loop ? 2 : 0), A = [...Array(size)].map(() => new Array(size).fill(0)), b = new Array(size).fill(0);
+    for (let k = 0; k < n; ++k) {
+      const a = [...Array(n)].map((_, j) => (arm(k, j) ? dturn(phi[j], arm(k, j)) : [0, 0]));
+      const centripetal = [0, 0];
+      for (let j = 0; j <= k; ++j) {
+        const r = turn(phi[j], arm(k, j));
+        centripetal[0] += r[0] * rate[j] ** 2;
+        centripetal[1] += r[1] * rate[j] ** 2;
+      }
+      for (let i = 0; i <= k; ++i) {
+        for (let j = 0; j <= k; ++j) A[i][j] += L[k].mass * (a[i][0] * a[j][0] + a[i][1] * a[j][1]);
+        b[i] += L[k].mass * (a[i][0] * centripetal[0] + a[i][1] * (centripetal[1] - s.gravity));
+      }
+    }
+    for (let i = 0; i < n; ++i) A[i][i] += L[i].inertia[1];
+    if (s.loop)
+      for (let j = 0; j < n; ++j) {
+        const d = dturn(phi[j], loopArm(j)), r = turn(phi[j], loopArm(j));
+        for (let c = 0; c < 2; ++c) {
+          A[n + c][j] = A[j][n + c] = d[c];
+          b[n + c] += r[c] * rate[j] ** 2;
+        }
+      }
+    return solve(A, b).slice(0, n);
+  };
+  let phi = 0;
+  let y = [...L.map((l) => (phi += l.angle0)), ...new Array(n).fill(0)];
+  const rate = (z) => [...z.slice(n), ...acceleration(z.slice(0, n), z.slice(n))];
+  const steps = Math.ceil(t / h), dt = t / steps, at = (z, k, c) => z.map((v, i) => v + c * k[i]);
+  for (let k = 0; k < steps; ++k) {
+    const k1 = rate(y), k2 = rate(at(y, k1, dt / 2)), k3 = rate(at(y, k2, dt / 2)), k4 = rate(at(y, k3, dt));
+    y = y.map((v, i) => v + (dt / 6) * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]));
+  }
+  return y;
+}
+
+/** An angle in [-pi, pi]. */
+const wrap = (a) => a - 2 * Math.PI * Math.round(a / (2 * Math.PI));
+
 /** What a scenario's order study compares, as the audit observes it from a frame, and its scale: a free body's
  * body angular velocity R^T w ("angular_velocity"); the symmetric top's axis R e3 and a random body's fixed angular
  * momentum's direction in the body, R^T M0 / |M0| ("orientation"), relative to |w0| for the tops and the boxes, 1
@@ -292,6 +392,48 @@ function studyOf(name, s) {
           y = y.map((v, i) => v + (dt / 6) * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]));
         }
         return { joint_coordinates: y };
+      },
+    };
+  }
+  if (s.bodies) {
+    // Every body's position and velocity, relative to 1; the reference the classical RK4 on Newton's equations.
+    const n = s.bodies.length, m = s.bodies.map((b) => b.mass);
+    const split = (y) => ({ position: y.slice(0, 3 * n), velocity: y.slice(3 * n) });
+    return {
+      scale: 1,
+      observeLinks: (frames) => split([...frames.flatMap((f) => f.x), ...frames.flatMap((f) => f.v)]),
+      exact(h) {
+        const rate = (y) => {
+          const a = new Array(3 * n).fill(0);
+          for (let i = 0; i < n; ++i)
+            for (let j = 0; j < n; ++j) {
+              if (i === j) continue;
+              const r = [0, 1, 2].map((c) => y[3 * j + c] - y[3 * i + c]), d = Math.hypot(...r);
+              for (let c = 0; c < 3; ++c) a[3 * i + c] += (s.gravitation * m[j] * r[c]) / (d * d * d);
+            }
+          return [...y.slice(3 * n), ...a];
+        };
+        const steps = Math.ceil(s.tEnd / h), dt = s.tEnd / steps, at = (z, k, c) => z.map((v, i) => v + c * k[i]);
+        let y = [...s.bodies.flatMap((b) => b.position0), ...s.bodies.flatMap((b) => b.velocity0)];
+        for (let k = 0; k < steps; ++k) {
+          const k1 = rate(y), k2 = rate(at(y, k1, dt / 2)), k3 = rate(at(y, k2, dt / 2)), k4 = rate(at(y, k3, dt));
+          y = y.map((v, i) => v + (dt / 6) * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]));
+        }
+        return split(y);
+      },
+    };
+  }
+  if (s.links) {
+    // The joints' angles and rates, each relative to its parent's (link 0's to the world's), from each link's angle
+    // about y and its rate; relative to |angle0| sqrt(1 + g / l) (l the first bar's length; the four-bar's 1).
+    const relative = (phi, rate) => [...phi.map((p, k) => wrap(p - (k ? phi[k - 1] : 0))), ...rate.map((r, k) => r - (k ? rate[k - 1] : 0))];
+    const length = s.loop ? 1 : 2 * Math.hypot(...s.links[0].com);
+    return {
+      scale: Math.hypot(...s.links.map((l) => l.angle0)) * Math.sqrt(1 + s.gravity / length),
+      observeLinks: (frames) => ({ joint_coordinates: relative(frames.map((f) => Math.atan2(f.rotation[2], f.rotation[0])), frames.map((f) => f.w[1])) }),
+      exact(h) {
+        const y = chainReference(s, s.tEnd, h), n = s.links.length;
+        return { joint_coordinates: relative(y.slice(0, n), y.slice(n)) };
       },
     };
   }
@@ -337,9 +479,51 @@ export async function orderStudy(prefix, name, s, makeWorld) {
   for (let n = s.steps0; n <= 16384; n *= 2) {
     const world = await makeWorld(s.tEnd / n);
     for (let k = 0; k < n; ++k) world.step();
-    const [f] = world.frames();
+    const frames = world.frames(), [f] = frames;
     world.free?.();
-    const got = study.observe(f.rotation, f.w, f.x, f.v);
+    const got = study.observeLinks ? study.observeLinks(frames) : study.observe(f.rotation, f.w, f.x, f.v);
     for (const c of Object.keys(want)) console.log(`${prefix}_${c}_error_n${n}`, (Math.hypot(...sub(got[c], want[c])) / study.scale).toExponential(6));
+  }
+}
+
+/** The audit's shapes, each of mass 2 (box: edges; sphere: radius; cylinder, capsule, cone: radius and height or
+ * cylinder length, axis z; ellipsoid: semi-axes; two_spheres: radius and the centres' distance from the origin along x; convex_hull: the
+ * tetrahedron (+-a, 0, c), (0, +-b, -c)), and their principal moments about the centre of mass, ascending. */
+export const SHAPE_MASS = 2;
+export const shapes = {
+  box: [0.3, 0.5, 0.7], sphere: [0.4, 0, 0], cylinder: [0.2, 0.9, 0], capsule: [0.2, 0.6, 0], cone: [0.3, 0.8, 0],
+  ellipsoid: [0.2, 0.3, 0.5], two_spheres: [0.1, 0.4, 0], convex_hull: [0.3, 0.4, 0.25],
+};
+export const hullPoints = ([a, b, c]) => [[a, 0, c], [-a, 0, c], [0, b, -c], [0, -b, -c]];
+export function exactMoments(name, [a, b, c], m = SHAPE_MASS) {
+  const ascending = (x) => x.sort((p, q) => p - q);
+  if (name === 'box') return ascending([m * (b * b + c * c) / 12, m * (a * a + c * c) / 12, m * (a * a + b * b) / 12]);
+  if (name === 'sphere') return [1, 2, 3].map(() => (2 * m * a * a) / 5);
+  if (name === 'cylinder') return ascending([m * (3 * a * a + b * b) / 12, m * (3 * a * a + b * b) / 12, (m * a * a) / 2]);
+  if (name === 'capsule') { // a cylinder of length b and two half balls of radius a
+    const mc = (m * b) / (b + (4 * a) / 3), mh = (m - mc) / 2;
+    const side = (mc * (3 * a * a + b * b)) / 12 + 2 * mh * ((2 * a * a) / 5 + (b * b) / 4 + (3 * b * a) / 8);
+    return ascending([side, side, (mc * a * a) / 2 + (4 * mh * a * a) / 5]);
+  }
+  if (name === 'cone') return ascending([(3 * m * a * a) / 20 + (3 * m * b * b) / 80, (3 * m * a * a) / 20 + (3 * m * b * b) / 80, (3 * m * a * a) / 10]);
+  if (name === 'ellipsoid') return ascending([(m * (b * b + c * c)) / 5, (m * (a * a + c * c)) / 5, (m * (a * a + b * b)) / 5]);
+  if (name === 'two_spheres') { // each ball about its centre, and the parallel axes' m/2 b^2 each
+    const ball = (2 * (m / 2) * a * a) / 5;
+    return ascending([2 * ball, 2 * ball + m * b * b, 2 * ball + m * b * b]);
+  }
+  if (name === 'convex_hull') return ascending([m * (b * b / 10 + c * c / 5), m * (a * a / 10 + c * c / 5), (m * (a * a + b * b)) / 10]);
+  throw new Error(`no shape ${name}`);
+}
+/** The largest relative error of an engine's moments (any order) against the exact ones. */
+export function shapeError(name, size, moments) {
+  const exact = exactMoments(name, size), got = [...moments].sort((p, q) => p - q);
+  return Math.max(...got.map((x, i) => Math.abs(x - exact[i]) / exact[i]));
+}
+/** Each shape's largest relative error, "shape_<name>_largest_relative_error", for the shapes momentsOf builds
+ * (it returns null for one the engine does not offer). */
+export function shapeLines(momentsOf) {
+  for (const [name, size] of Object.entries(shapes)) {
+    const moments = momentsOf(name, size);
+    if (moments) console.log(`shape_${name}_largest_relative_error`, shapeError(name, size, moments).toExponential(6));
   }
 }
