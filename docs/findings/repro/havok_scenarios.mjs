@@ -26,12 +26,13 @@ console.log('havok_version', pkg.version);
 let RESULT_OK;
 const ck = (r) => {
   const result = Array.isArray(r) ? r[0] : r;
-  if (result !== RESULT_OK) throw new Error(`a Havok call returned ${result}`);
+  if (result?.value !== RESULT_OK.value) throw new Error(`a Havok call returned ${result?.value}`); // enums: each instance's own
   return Array.isArray(r) ? r[1] : r;
 };
 
 // Each world in a Havok instance of its own: a run's last digits depend on what its instance ran before (the
-// four-bar after chain5 in one instance: its largest anchor separation 6.489966e-3 m, 6.473416e-3 alone).
+// four-bar after the five other jointed scenarios' worlds were built in one instance: its largest anchor separation
+// 6.489966e-3 m, 6.473416e-3 in a fresh one; the four_bar_after_five_worlds lines below).
 async function world(s, h = s.h, instance = null) {
   const H = instance ?? (await HavokPhysics({ wasmBinary }));
   RESULT_OK = H.Result.RESULT_OK;

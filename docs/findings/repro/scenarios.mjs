@@ -254,8 +254,8 @@ export function longRun(prefix, s, world, n) {
     momentum = Math.max(momentum, Math.hypot(...sub(m.momentum, m0.momentum)) / l0);
   }
   const line = (name, value) => console.log(`${prefix}_${name}_max`, value.toExponential(6));
-  if (s.joint === 'free' && s.momentum !== false) line('momentum', momentum); // none under gravity
-  else line('anchor', anchor);
+  if (s.joint !== 'free') line('anchor', anchor);
+  else if (s.momentum !== false) line('momentum', momentum); // the projectile's: none under gravity
   if (s.loop) line('loop', loop);
   line('energy', energy);
 }

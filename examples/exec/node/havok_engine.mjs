@@ -23,9 +23,9 @@ import { chainLinks, oneBodyStart, quaternionOf, rotate, sub } from './bodies.mj
 import { Refused, frame, hullPoints, scenarioOf, serveEngine } from './protocol.mjs';
 
 const root = new URL('./node_modules/@babylonjs/havok/', import.meta.url);
-// Each run in a Havok instance of its own: a run's last digits depend on what its instance ran before (the
-// four-bar after chain5 in one instance leaves its anchors up to 6.489966e-3 m apart, alone 6.473416e-3), and a
-// run's numbers should be those of its setup alone. The module is compiled once; an instance takes ~7 ms.
+// Each run in a Havok instance of its own: a run's last digits depend on what its instance built before (the
+// four-bar in an instance that has built the five other jointed scenarios' worlds leaves its anchors up to
+// 6.489966e-3 m apart, in a fresh one 6.473416e-3), and a run's numbers should be those of its setup alone. The module is compiled once; an instance takes ~7 ms.
 const compiled = await WebAssembly.compile(readFileSync(new URL('lib/esm/HavokPhysics.wasm', root)));
 const instance = () =>
   HavokPhysics({
