@@ -396,11 +396,13 @@ TEST(tableau_file, claims_a_file_may_declare_are_judged_algebraically) {
   EXPECT_EQ(r.find("symplectic")->result, outcome::contradicted);
   EXPECT_EQ(r.find("stage order")->result, outcome::confirmed);
   // The implicit midpoint rule declared not symplectic nor symmetric: both hold, so the
-  // declaration is exceeded (not "confirmed"); explicit Euler declared so is confirmed.
+  // declarations -- statements that the properties are absent -- are contradicted (a
+  // declared "no" is never "exceeds", which is for an order); explicit Euler declared so is
+  // confirmed.
   const auto midpoint = audit::analyse(audit::parse_tableau(
       R"({"A": [["1/2"]], "b": ["1"], "c": ["1/2"], "symplectic": false, "symmetric": false})", "midpoint"));
-  EXPECT_EQ(midpoint.find("symplectic")->result, outcome::exceeds);
-  EXPECT_EQ(midpoint.find("symmetric")->result, outcome::exceeds);
+  EXPECT_EQ(midpoint.find("symplectic")->result, outcome::contradicted);
+  EXPECT_EQ(midpoint.find("symmetric")->result, outcome::contradicted);
   const auto euler =
       audit::analyse(audit::parse_tableau(R"({"A": [["0"]], "b": ["1"], "c": ["0"], "symplectic": false})", "euler"));
   EXPECT_EQ(euler.find("symplectic")->result, outcome::confirmed);
@@ -574,12 +576,13 @@ TEST(verdicts, a_defect_within_the_coefficients_precision_or_under_the_tiers_bud
   EXPECT_EQ(judge(false, forty, eps50, 5e-40).result, outcome::not_resolvable);
   EXPECT_EQ(judge(false, defect(edge * 1.01, false), eps50, 5e-40).result, outcome::confirmed);
   // Declared not symplectic, the defect within double's rounding budget: not resolvable in
-  // double (a lower floor would resolve it), never "measured yes"; within mpfr50's: exceeds.
+  // double (a lower floor would resolve it), never "measured yes"; within mpfr50's the
+  // property holds and the declared "no" is contradicted.
   const audit::verdict d = judge(false, defect(3, true), 0x1p-52);
   EXPECT_EQ(d.result, outcome::not_resolvable);
   EXPECT_NE(d.needs.find("-t mpfr50"), std::string::npos) << d.needs;
   EXPECT_NE(d.measured, "yes");
-  EXPECT_EQ(judge(false, defect(3, true), eps50).result, outcome::exceeds);
+  EXPECT_EQ(judge(false, defect(3, true), eps50).result, outcome::contradicted);
   // A precision no coarser than the tier's (double coefficients in double) changes nothing.
   EXPECT_EQ(judge(true, defect(600, false), 0x1p-52, 0x1p-53).result, outcome::contradicted);
 }

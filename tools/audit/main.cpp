@@ -135,9 +135,15 @@ int main(int argc, char** argv) {
   CLI::App app{"mechcheck-audit: order, symplecticity, time symmetry, long-time energy "
                "behaviour, first integrals and cost of one-step integrators, adaptive drivers and "
                "physics engines, against what they declare"};
+  // The claims a tableau file may declare, by their verdicts' names: the same table the
+  // analysis judges them from.
+  std::string tableau_claim_names;
+  for (const auto& [field, claim] : audit::tableau_claims)
+    tableau_claim_names += (tableau_claim_names.empty() ? "" : ", ") + std::string(claim) + " (" + std::string(field) + ")";
   app.footer("Exit status: 0 all audited; 1 an input refused (the others are still audited and written); "
              "2 a claim --require names is contradicted (a stepper's or engine integrator's measured claim, or "
-             "a tableau file's algebraic one: order, embedding order, stage order, symplectic, symmetric), or a "
+             "a tableau file's algebraic one: " + tableau_claim_names + "; a declared \"no\" states that the "
+             "property is absent, and is contradicted where it holds), or a "
              "dynamics library's quantity disagrees with the Lagrangian; "
              "2 also when a target --require-measured names measured nothing of a problem or scenario it was "
              "audited on (refused, skipped, or every run failed); "
@@ -177,8 +183,9 @@ int main(int argc, char** argv) {
                "integrators, engine scenarios, problems -- filtered by the patterns given, and exit");
   app.add_option("--require", require,
                  "exit with status 2 when a claim of a stepper or engine integrator matching this pattern is "
-                 "contradicted, a tableau file's algebraic claims included (tableau::<name>; e.g. 'mechcheck::*'; "
-                 "'*' for all), or when a dynamics library matching it disagrees with the Lagrangian");
+                 "contradicted, a tableau file's algebraic claims included (tableau::<name>: " + tableau_claim_names +
+                     "; e.g. 'mechcheck::*'; '*' for all), or when a dynamics library matching it disagrees with the "
+                     "Lagrangian");
   app.add_option("--require-measured", require_measured,
                  "exit with status 2 when a stepper, adaptive driver or engine integrator matching this pattern "
                  "measured nothing of a problem or scenario it was audited on (it refused or skipped it, or every "
@@ -193,7 +200,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> tableau_files;
   app.add_option("--tableau", tableau_files,
                  "a Butcher tableau in JSON (docs/tableau-format.md; the classical ones are in " + tableau_directory() +
-                     "): its order conditions up to order 10 in mpfr100 at the precision its coefficients are "
+                     "): its order conditions up to order " + std::to_string(audit::default_tableau_orders) +
+                     " (or one past its declared orders) in mpfr100 at the precision its coefficients are "
                      "given to, then its stepper audited as tableau::<name>; with no --stepper only the tableaus "
                      "are audited. A file that cannot be read is a row of the report; the others go on");
   std::vector<std::string> driver_patterns;

@@ -22,13 +22,18 @@
 ///     D(z): sum_i b_i c_i^(k-1) a_ij = b_j (1 - c_j^k) / k, k <= z
 /// and B(p), C(e), D(z) with p <= e + z + 1 and p <= 2 e + 2 give order p. B(k) is itself
 /// the condition of the bushy tree of order k, so a failing B(k) bounds the order by k - 1
-/// at any k. A claim neither the trees nor these decide is never confirmed.
+/// at any k. A claim neither the trees nor these decide is never confirmed. They are taken
+/// with c = A 1, the row sums the trees use (the theorem assumes it): the c a tableau writes
+/// is held to A 1 apart, so that a c rounded on its own (a table of doubles whose c is its
+/// rows' sum in double) does not move a condition the trees hold.
 ///
 /// Every condition is a polynomial in the coefficients, homogeneous of degree d (|t| for a
 /// tree). Coefficients off by a relative delta move it by at most about d delta times the
 /// same polynomial in the coefficients' absolute values, its scale; each residual is also
 /// kept relative to d x scale, so "holds to the precision given" is one test for every
-/// condition: relative residual <= max(2 delta, the rounding of R).
+/// condition: relative residual <= max(2 delta, the rounding of R). One scale serves a
+/// condition wherever it is evaluated: B(k) takes c_i^(k-1) at the scale (|A| 1)_i^(k-1), as
+/// the bushy tree does.
 ///
 /// Evaluated in a wide tier (mpfr100 for the audit), the residuals say to what precision a
 /// table's coefficients satisfy each order: "order 4 exactly" (residuals at that tier's
@@ -337,39 +342,52 @@ order_condition_report<R> order_conditions(const butcher_tableau<R>& t, int max_
     extend(extend, n - 1, 0, 0);
   }
 
-  // The simplifying assumptions B(k) (k <= 2s + 2), C(k) and D(k) (k <= s + 1).
-  std::vector<R> cpow(s, R(1));  // c_j^(k-1)
+  // The simplifying assumptions B(k) (k <= 2s + 2), C(k) and D(k) (k <= s + 1), with c the
+  // row sums A 1 as the trees have them (the bushy tree of order k is B(k) with c = A 1) and
+  // each condition's scale its terms' as the trees take them: c_i^k by (|A| 1)_i^k. A
+  // condition is then judged on one scale whether a tree or B(k) evaluates it; the c
+  // written in the tableau is held to A 1 apart (row_sum).
+  std::vector<R> c1(s, R(0)), ca(s, R(0));
+  for (std::size_t i = 0; i < s; ++i)
+    for (std::size_t j = 0; j < s; ++j) {
+      c1[i] += t.a[i][j];
+      ca[i] += abs_a[i * s + j];
+    }
+  std::vector<R> cpow(s, R(1)), capow(s, R(1));  // (A 1)_j^(k-1), (|A| 1)_j^(k-1)
   for (int k = 1; k <= 2 * static_cast<int>(s) + 2; ++k) {
     R sum = 0, scale = 0;
     for (std::size_t i = 0; i < s; ++i) {
       sum += t.b[i] * cpow[i];
-      scale += abs(t.b[i] * cpow[i]);
+      scale += abs(t.b[i]) * capow[i];
     }
     out.b_relative.push_back(detail::relative_residual(R(sum - R(1) / R(k)), scale, k));
     if (k <= static_cast<int>(s) + 1) {
       double worst_c = 0, worst_d = 0;
       for (std::size_t i = 0; i < s; ++i) {
-        R cs = 0, ca = 0;
+        R cs = 0, ca_sum = 0;
         for (std::size_t j = 0; j < s; ++j) {
           cs += t.a[i][j] * cpow[j];
-          ca += abs(t.a[i][j] * cpow[j]);
+          ca_sum += abs_a[i * s + j] * capow[j];
         }
-        const R ck = cpow[i] * t.c[i];
-        worst_c = std::max(worst_c, detail::relative_residual(R(cs - ck / R(k)), R(ca + abs(ck) / R(k)), k));
+        const R ck = cpow[i] * c1[i], cak = capow[i] * ca[i];
+        worst_c = std::max(worst_c, detail::relative_residual(R(cs - ck / R(k)), R(ca_sum + cak / R(k)), k));
       }
       for (std::size_t j = 0; j < s; ++j) {
         R ds = 0, da = 0;
         for (std::size_t i = 0; i < s; ++i) {
           ds += t.b[i] * cpow[i] * t.a[i][j];
-          da += abs(t.b[i] * cpow[i] * t.a[i][j]);
+          da += abs(t.b[i]) * capow[i] * abs_a[i * s + j];
         }
-        const R rhs = t.b[j] * (R(1) - cpow[j] * t.c[j]) / R(k);
-        worst_d = std::max(worst_d, detail::relative_residual(R(ds - rhs), R(da + abs(t.b[j]) * (1 + abs(cpow[j] * t.c[j])) / R(k)), k + 1));
+        const R rhs = t.b[j] * (R(1) - cpow[j] * c1[j]) / R(k);
+        worst_d = std::max(worst_d, detail::relative_residual(R(ds - rhs), R(da + abs(t.b[j]) * (1 + capow[j] * ca[j]) / R(k)), k + 1));
       }
       out.c_relative.push_back(worst_c);
       out.d_relative.push_back(worst_d);
     }
-    for (std::size_t i = 0; i < s; ++i) cpow[i] *= t.c[i];
+    for (std::size_t i = 0; i < s; ++i) {
+      cpow[i] *= c1[i];
+      capow[i] *= ca[i];
+    }
   }
   for (std::size_t i = 0; i < s; ++i) {
     R sum = 0;

@@ -246,7 +246,8 @@ std::string number_text(const rational& x) {
   }
   return os.str();
 }
-std::string poly_text(const poly& p) {
+/// The polynomial whole; a coefficient within its bound (bound[k] > 0) named so.
+std::string poly_text(const poly& p, const std::vector<double>& bound = {}) {
   if (p.empty()) return "0";
   std::string out;
   for (std::size_t k = 0; k < p.size(); ++k) {
@@ -257,6 +258,7 @@ std::string poly_text(const poly& p) {
     const std::string power = k == 0 ? "" : k == 1 ? "z" : "z^" + std::to_string(k);
     if (k == 0 || a != 1) out += number_text(a) + (k ? " " : "");
     out += power;
+    if (k < bound.size() && bound[k] > 0 && magnitude(p[k]) <= bound[k]) out += " (within the precision given)";
   }
   return out;
 }
@@ -274,7 +276,10 @@ std::complex<double> stability_report::r(std::complex<double> z) const {
   return num / den;
 }
 
-std::string stability_report::r_text() const { return "(" + poly_text(p) + ") / (" + poly_text(q) + ")"; }
+std::string stability_report::r_text() const {
+  if (p_written.empty() && q_written.empty()) return "(" + poly_text(p) + ") / (" + poly_text(q) + ")";
+  return "(" + poly_text(p_written, p_bound) + ") / (" + poly_text(q_written, q_bound) + ")";
+}
 
 stability_report stability(const butcher_tableau<rational>& t, double precision) {
   stability_report out;
@@ -347,10 +352,28 @@ stability_report stability(const butcher_tableau<rational>& t, double precision)
     for (std::size_t k = 0; k <= s; ++k) e[k] *= double(k) * precision;
     return e;
   };
-  const std::vector<double> dq = moved(ra), dp = moved(rm);
+  std::vector<double> dq = moved(ra), dp = moved(rm);
+  if (!implicit) {  // p_k = b^T A^(k-1) 1: k precision |b|^T |A|^(k-1) 1, the sizes it sums
+    dq.assign(1, 0.0);
+    dp.assign(s + 1, 0.0);
+    std::vector<double> v(s, 1.0);
+    for (std::size_t k = 1; k <= s; ++k) {
+      double sum = 0;
+      for (std::size_t i = 0; i < s; ++i) sum += magnitude(t.b[i]) * v[i];
+      dp[k] = double(k) * precision * sum;
+      std::vector<double> next(s, 0.0);
+      for (std::size_t i = 0; i < s; ++i)
+        for (std::size_t j = 0; j < i; ++j) next[i] += magnitude(t.a[i][j]) * v[j];
+      v = std::move(next);
+    }
+  }
+  out.p_written = out.p;
+  out.q_written = out.q;
+  out.p_bound = dp;
+  out.q_bound = dq;
   const auto clean_by = [&](poly& c, const std::vector<double>& d) {
     bool changed = false;
-    for (std::size_t k = 0; k < c.size(); ++k)
+    for (std::size_t k = 0; k < c.size() && k < d.size(); ++k)
       if (c[k] != 0 && magnitude(c[k]) <= d[k]) {
         c[k] = 0;
         changed = true;

@@ -14,9 +14,10 @@
 ///   algebraically stable: b_i >= 0 and M = B A + A^T B - b b^T positive semidefinite
 ///     (symmetric elimination with rationals).
 /// Coefficients given to a relative precision delta (decimals): a coefficient of P, Q or e
-/// within what such coefficients can move it (to first order: k delta times the elementary
-/// symmetric function e_k of A's row sums of absolute values, a bound on the sizes of the
-/// products summed in a k-th coefficient, and their products in e) is zero, and so is an
+/// within what such coefficients can move it (to first order: k delta times the sizes of
+/// the products of k coefficients it sums -- for an explicit method p_k = b^T A^(k-1) 1
+/// exactly, bounded by |b|^T |A|^(k-1) 1; for an implicit one by the elementary symmetric
+/// function e_k of A's row sums of absolute values -- and their products in e) is zero, and so is an
 /// entry of M within 4 s delta of M's largest product |b_i b_j| at each elimination step: a
 /// condition that holds exactly for the method holds to that size for its rounded
 /// coefficients. Exact coefficients (rationals, short decimals) are decided exactly. Implicit tableaus of more than 16 stages are not
@@ -46,7 +47,13 @@ inline constexpr std::size_t max_stability_coefficient_bits = 700;
 /// The stability of a tableau.
 struct stability_report {
   std::string not_analysed;        ///< non-empty: why nothing below was computed
-  std::vector<rational> p, q;      ///< R = P/Q, coefficients of z^0, z^1, ...
+  std::vector<rational> p, q;      ///< R = P/Q, coefficients of z^0, z^1, ..., as decided on
+  /// P and Q as the coefficients write them, to their true degree (s for an explicit method
+  /// of s stages whose subdiagonal and last weight are non-zero), and what coefficients off
+  /// by the precision given can move each of their coefficients (0: exact): a coefficient
+  /// within its bound is zero to the precision given, and is set to zero in p and q.
+  std::vector<rational> p_written, q_written;
+  std::vector<double> p_bound, q_bound;
   bool a_stable = false, l_stable = false, algebraically_stable = false;
   /// Why each holds or not: "a pole at Re z <= 0", "|R(iy)| = 1.08 at y = 2.5", ...
   std::string a_words, l_words, algebraic_words;
@@ -55,7 +62,9 @@ struct stability_report {
 
   /// R(z) in double, for plots.
   std::complex<double> r(std::complex<double> z) const;
-  /// "(1 + z/2 + z^2/12) / (1 - z/2 + z^2/12)", coefficients as rationals or decimals.
+  /// "(1 + z/2 + z^2/12) / (1 - z/2 + z^2/12)": P and Q as written, whole, coefficients as
+  /// rationals or decimals; one within what the precision given can move it is named so
+  /// ("+ 3.2e-21 z^9 (within the precision given)").
   std::string r_text() const;
 };
 

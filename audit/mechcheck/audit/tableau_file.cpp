@@ -271,34 +271,53 @@ std::string digits_held(const order_condition_report<mpfr100>& r, int p) {
 }  // namespace
 
 namespace {
-/// How order p + 1 fails (p the order held at `below`), or why it is not decided.
-std::string next_order_words(const order_condition_report<mpfr100>& r, int p, double below) {
-  const std::string next = "order " + std::to_string(p + 1);
-  if (p < r.max_order)
-    return "; " + next + " fails by " + sci(r.residual[std::size_t(p)]) + " (relative " +
-           sci(r.relative[std::size_t(p)]) + ")";
-  if (r.bushy_failure(below) == p + 1)
-    return "; " + next + " fails by " + sci(r.b_relative[std::size_t(p)]) +
-           " relative in its bushy-tree condition b^T c^" + std::to_string(p) + " = 1/" + std::to_string(p + 1);
-  return "; " + next + " not evaluated (" + (r.limit.empty() ? "trees evaluated to order " + std::to_string(r.max_order) : r.limit) + ")";
+/// The relative residual of order k's conditions: by its trees, past them by its bushy-tree
+/// condition B(k) (the one evaluated there).
+double relative_of(const order_condition_report<mpfr100>& r, int k) {
+  if (k <= r.max_order) return r.relative[std::size_t(k - 1)];
+  return k <= static_cast<int>(r.b_relative.size()) ? r.b_relative[std::size_t(k - 1)] : 0.0;
+}
+
+/// How order k fails, or why it is not decided, with its relative residual.
+std::string failing_order_words(const order_condition_report<mpfr100>& r, int k, double below) {
+  const std::string order = "order " + std::to_string(k);
+  if (k <= r.max_order) return order + " fails by " + sci(r.relative[std::size_t(k - 1)]) + " relative";
+  if (k <= static_cast<int>(r.b_relative.size()) && r.b_relative[std::size_t(k - 1)] > below)
+    return order + " fails by " + sci(r.b_relative[std::size_t(k - 1)]) +
+           " relative in its bushy-tree condition b^T c^" + std::to_string(k - 1) + " = 1/" + std::to_string(k) +
+           " (c = A 1)";
+  return order + " not evaluated (" +
+         (r.limit.empty() ? "trees evaluated to order " + std::to_string(r.max_order) : r.limit) + ")";
 }
 }  // namespace
 
 std::string order_phrase(const order_condition_report<mpfr100>& r) {
-  // p: every condition within the precision given; loose: within 1e-8 relative (what a
-  // table right to a few digits less than its storage still reaches).
-  const int p = r.order(r.tolerance), loose = r.order(1e-8);
-  const std::string how = p > r.max_order ? " (trees to order " + std::to_string(r.max_order) +
-                                                ", then the simplifying assumptions B, C, D)"
-                                          : "";
-  if (loose == 0) return "not consistent (sum b_i - 1 = " + sci(r.residual[0]) + ")";
+  // One number a condition, its relative residual (the quantity judged): p the orders held
+  // within the precision given; loose those held to 1e-8 (what a table right to a few
+  // digits less than its storage still reaches), stated once as their largest residual.
+  const int p = r.order(r.tolerance), loose = std::max(p, r.order(1e-8));
+  const auto range = [](int from, int to) {
+    return from == to ? "order " + std::to_string(from) : "orders " + std::to_string(from) + " to " + std::to_string(to);
+  };
+  const auto largest = [&r](int from, int to) {
+    double worst = 0;
+    for (int k = from; k <= to; ++k) worst = std::max(worst, relative_of(r, k));
+    return worst;
+  };
+  std::string out;
+  if (p == 0 && loose == 0) return "not consistent: " + failing_order_words(r, 1, r.tolerance);
+  if (p > 0) {
+    const double worst = largest(1, p);
+    out = "order " + std::to_string(p) +
+          (p > r.max_order ? " (trees to order " + std::to_string(r.max_order) + ", then the simplifying assumptions B, C, D)"
+                           : "") +
+          (worst <= r.exact_tolerance ? " exactly"
+                                      : " to " + sci(worst) + " relative, within the precision given (" + sci(r.tolerance) + ")");
+  }
   if (loose > p)
-    return "order " + std::to_string(loose) + " to " + sci(r.relative_up_to(loose)) +
-           " relative, beyond the precision given (" + sci(r.tolerance) + ")" + next_order_words(r, p, r.tolerance);
-  const double worst = r.relative_up_to(p);
-  return "order " + std::to_string(p) + how +
-         (worst <= r.exact_tolerance ? " exactly" : " to " + sci(worst) + " relative, within the precision given") +
-         next_order_words(r, p, r.tolerance);
+    out += (out.empty() ? "" : "; ") + range(p + 1, loose) + " only to " + sci(largest(p + 1, loose)) +
+           " relative, beyond the precision given" + (p > 0 ? "" : " (" + sci(r.tolerance) + ")");
+  return out + "; " + failing_order_words(r, loose + 1, loose > p ? 1e-8 : r.tolerance);
 }
 
 
@@ -317,7 +336,7 @@ verdict condition_verdict(const char* claim, const std::optional<bool>& declared
   using outcome = verdict::outcome;
   if (!declared) v.result = outcome::not_declared;
   else if (*declared) v.result = exact ? outcome::confirmed : given ? outcome::to_precision_given : outcome::contradicted;
-  else v.result = given ? outcome::exceeds : outcome::confirmed;
+  else v.result = given ? outcome::contradicted : outcome::confirmed;  // a declared "no" states absence
   return v;
 }
 
@@ -355,7 +374,7 @@ verdict order_verdict(const char* claim, const std::optional<int>& declared,
 int orders_to_evaluate(const tableau_file& t, int max_order) {
   if (max_order > 0) return max_order;
   // One order past every declared one (to tell "exactly p" from "exceeds"), at least 10.
-  return std::max({10, t.order.value_or(0) + 1, t.embedding_order.value_or(0) + 1});
+  return std::max({default_tableau_orders, t.order.value_or(0) + 1, t.embedding_order.value_or(0) + 1});
 }
 
 void add_algebraic_claims(claims& c, const order_condition_report<mpfr100>& r, const std::string& precision_words) {
@@ -439,7 +458,7 @@ tableau_analysis analyse(const tableau_file& t, int max_order) {
       if (!declared) v.result = outcome::not_declared;
       else if (*declared) v.result = holds ? (a.stability.to_precision ? outcome::to_precision_given : outcome::confirmed)
                                            : outcome::contradicted;
-      else v.result = holds ? outcome::exceeds : outcome::confirmed;
+      else v.result = holds ? outcome::contradicted : outcome::confirmed;  // a declared "no" states absence
     }
     a.verdicts.push_back(v);
   }

@@ -42,6 +42,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "mechcheck/audit/order_conditions.hpp"
@@ -69,6 +70,21 @@ inline constexpr int short_decimal_digits = 4;
 inline constexpr std::array<std::string_view, 15> tableau_fields{
     "name",       "source",    "A",         "b",        "c",        "bhat",     "order", "embedding_order",
     "stage_order", "symplectic", "symmetric", "A_stable", "L_stable", "algebraically_stable", "precision"};
+
+/// The claims a tableau file may declare: its field, and the name its verdict carries (the
+/// command's --require and --help name them from here).
+inline constexpr std::array<std::pair<std::string_view, std::string_view>, 8> tableau_claims{{
+    {"order", "order"},
+    {"embedding_order", "embedding order"},
+    {"stage_order", "stage order"},
+    {"symplectic", "symplectic"},
+    {"symmetric", "symmetric"},
+    {"A_stable", "A-stable"},
+    {"L_stable", "L-stable"},
+    {"algebraically_stable", "algebraically stable"}}};
+/// The orders a tableau's conditions are evaluated to by default: at least these, and one
+/// past every declared order (to tell "exactly p" from "exceeds").
+inline constexpr int default_tableau_orders = 10;
 
 struct tableau_file {
   std::string path;
