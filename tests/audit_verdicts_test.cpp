@@ -217,8 +217,8 @@ const property_row property_rows[] = {
     {"claimed_and_one_over", true, {true, false}, outcome::contradicted},
     {"denied_and_over", false, {false, true}, outcome::confirmed},
     // Declared not symplectic, none found: by AD within double's rounding budget, not
-    // resolvable in double (a lower floor would resolve a defect there; in mpfr50 it is
-    // exceeds: tableau_test's verdicts test); by finite differences the defect may lie
+    // resolvable in double (a lower floor would resolve a defect there; in mpfr50 the
+    // declared "no" is contradicted: tableau_test's verdicts test); by finite differences the defect may lie
     // below their resolution.
     {"denied_but_within_everywhere", false, {true, true}, outcome::not_resolvable},
     {"denied_within_by_finite_differences", false, {true, true}, outcome::not_resolvable, 1e-8},
@@ -348,10 +348,33 @@ TEST(audit_verdicts, a_declared_energy_behaviour_against_the_growth_class) {
   EXPECT_EQ(judge(bounded, energy_run("random walk", 99e-13, 0.5)), outcome::confirmed);
   EXPECT_EQ(judge(bounded, energy_run("random walk", 101e-13, 0.5)), outcome::not_resolvable);
   EXPECT_EQ(judge(bounded, energy_run("linear drift", 1e-6, 1.0)), outcome::contradicted);
-  EXPECT_EQ(judge(bounded, energy_run("lost (error of order one)", 0.5)), outcome::contradicted);
+  EXPECT_EQ(judge(bounded, energy_run(audit::lost_class, 0.5)), outcome::contradicted);
   EXPECT_EQ(judge(drift, energy_run("linear drift", 1e-6, 1.0)), outcome::confirmed);
   EXPECT_EQ(judge(drift, energy_run("bounded", 1e-6, 0.0)), outcome::exceeds);
   EXPECT_EQ(judge(std::nullopt, energy_run("bounded", 1e-6, 0.0)), outcome::not_declared);
+  // A long run that stopped (a state that was not finite): an energy error of order one
+  // before the stop is lost and contradicts "bounded", at 0.3 as at 2; a smaller one leaves
+  // the run cut short, undecided -- never a clearance.
+  for (const double max : {0.3, 1.0, 2.0}) {
+    audit::problem_audit stopped = energy_run("bounded", max, 0.0);
+    stopped.run->failure = "step 5001: the energy is not finite";
+    stopped.run->steps = 5000;
+    audit::claims c;
+    c.energy = bounded;
+    const audit::verdict v = audit::judge_energy(c, {stopped});
+    EXPECT_EQ(v.result, outcome::contradicted) << max;
+    EXPECT_EQ(v.measured, audit::lost_class) << max;
+    EXPECT_NE(v.evidence.find("stopped after 5000 steps"), std::string::npos) << v.evidence;
+  }
+  {
+    audit::problem_audit stopped = energy_run("bounded", 0.1, 0.0);
+    stopped.run->failure = "step 5001: the energy is not finite";
+    EXPECT_EQ(judge(bounded, stopped), outcome::not_resolvable);
+    std::vector<audit::problem_audit> both{energy_run("bounded", 1e-6, 0.01), stopped};
+    audit::claims c;
+    c.energy = bounded;
+    EXPECT_EQ(audit::judge_energy(c, both).result, outcome::not_resolvable);
+  }
   EXPECT_EQ(judge(bounded, audit::problem_audit{}), outcome::not_measured);
   EXPECT_EQ(judge(std::nullopt, audit::problem_audit{}), outcome::not_declared);
 }

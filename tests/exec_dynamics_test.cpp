@@ -157,6 +157,21 @@ TEST(exec_dynamics, the_robot_a_child_holds_is_the_reference_and_its_distance_is
   }
 }
 
+TEST(exec_dynamics, the_held_robot_keeps_the_gravity_the_robot_was_sent_with) {
+  // URDF has no gravity: a child's "held" URDF carries none, and the robot it holds is under
+  // the gravity it was sent with. Sent a gravity far from the default (0, 0, -9.81), a child
+  // that holds the robot 2^-20 heavier is within on every quantity; held under the default
+  // gravity, its bias forces and both dynamics would disagree by the difference.
+  robots::robot r = arm();
+  r.gravity = Eigen::Vector3d(0.5, -1.25, 2.0);
+  const audit::exec_dynamics_target t = audit::exec_dynamics(child("held"));
+  const audit::dynamics_check c = audit::check_dynamics(t.library, r, state());
+  ASSERT_EQ(c.residuals.size(), 4u);
+  for (const auto& res : c.residuals)
+    EXPECT_TRUE(res.within()) << audit::dynamics_quantity_name(res.quantity) << " " << res.residual;
+  ASSERT_TRUE(c.model_difference.has_value());
+}
+
 TEST(exec_dynamics, a_handshake_lists_known_quantities_once) {
   using audit::exec_protocol::parse_handshake;
   const std::string head = R"({"protocol": "mechcheck", "version": 1, "kind": "dynamics", "name": "d", )";

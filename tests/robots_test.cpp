@@ -243,6 +243,15 @@ TEST(robots, urdf_round_trips_every_number_and_refuses_what_is_not_urdf) {
   refused(head + "<joint name='j' type='revolute'><parent link='a'/><child link='b'/>"
                  "<origin xyz='0 0 x'/></joint></robot>",
           "joint j origin xyz: \"x\" is not a number");
+  // Four numbers where URDF has three (xyz, rpy, axis): refused by name, not cut to three.
+  refused(head + "<joint name='j' type='revolute'><parent link='a'/><child link='b'/><axis xyz='0 0 1 0'/></joint></robot>",
+          "joint j axis: \"0 0 1 0\" has more than three numbers");
+  refused(head + "<joint name='j' type='revolute'><parent link='a'/><child link='b'/>"
+                 "<origin xyz='0.1 0.2 0.3 0.4'/></joint></robot>",
+          "joint j origin xyz: \"0.1 0.2 0.3 0.4\" has more than three numbers");
+  refused(head + "<joint name='j' type='revolute'><parent link='a'/><child link='b'/>"
+                 "<origin rpy='0 0 0 1'/></joint></robot>",
+          "joint j origin rpy: \"0 0 0 1\" has more than three numbers");
   refused(head + "<joint name='j' type='revolute'><parent link='a'/><child link='c'/></joint></robot>",
           "its child \"c\" is not a link");
   // What URDF does not have is refused by name, not read as absent (issue 44, item 9).
@@ -427,6 +436,192 @@ TEST(dynamics_audit, every_library_holds_to_the_lagrangian_on_random_robots) {
         << library.name;
     EXPECT_GE(run, 13) << library.name << " refused " << 25 - run << " of 25 robots";
   }
+}
+
+/// A chain of revolute joints about skew axes, links of masses `masses` (each 0.4 below its
+/// hinge, the next hinge 0.5 below): the robots of the budget and scale tests.
+rb::robot chain(const std::vector<double>& masses) {
+  rb::robot r;
+  r.name = "chain";
+  r.links.push_back({"base", std::nullopt});
+  for (std::size_t k = 0; k < masses.size(); ++k) {
+    rb::inertial b;
+    b.mass = masses[k];
+    b.origin.xyz = {0.05, 0, -0.4};
+    b.inertia = Eigen::Vector3d(0.02, 0.03, 0.01).asDiagonal();
+    b.inertia *= masses[k];
+    r.links.push_back({"l" + std::to_string(k), b});
+    rb::joint j;
+    j.name = "j" + std::to_string(k);
+    j.parent = k == 0 ? "base" : "l" + std::to_string(k - 1);
+    j.child = "l" + std::to_string(k);
+    if (k > 0) j.origin.xyz = {0, 0, -0.5};
+    j.axis = k % 2 ? Eigen::Vector3d(0, 0.6, 0.8) : Eigen::Vector3d(0.8, 0.6, 0);
+    r.joints.push_back(j);
+  }
+  return r;
+}
+
+audit::dynamics_state chain_state(int n, double sign = 1) {
+  audit::dynamics_state x;
+  x.q = x.qdot = x.qddot = x.tau = Eigen::VectorXd(n);
+  for (int i = 0; i < n; ++i) {
+    x.q(i) = 0.3 - 0.2 * i;
+    x.qdot(i) = 0.7 + 0.1 * i;
+    x.qddot(i) = sign * (1.5 - 0.5 * i);
+    x.tau(i) = sign * (2.0 - 0.75 * i);
+  }
+  return x;
+}
+
+/// A library that returns the reference of `quantity`, rounded once, with `eps_off` eps of
+/// its scale added to the first entry: an error of a known size.
+audit::dynamics_library off_by(audit::dynamics_quantity quantity, const audit::dynamics_state& x, double eps_off) {
+  struct model final : audit::dynamics_model {
+    audit::dynamics_quantity quantity;
+    Eigen::MatrixXd value;
+    std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd&) override {
+      return quantity == audit::dynamics_quantity::mass_matrix ? std::optional<Eigen::MatrixXd>(value) : std::nullopt;
+    }
+    std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd&, const Eigen::VectorXd&) override {
+      return quantity == audit::dynamics_quantity::bias ? std::optional<Eigen::VectorXd>(value.col(0)) : std::nullopt;
+    }
+    std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd&, const Eigen::VectorXd&, const Eigen::VectorXd&) override {
+      return quantity == audit::dynamics_quantity::inverse ? std::optional<Eigen::VectorXd>(value.col(0)) : std::nullopt;
+    }
+    std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd&, const Eigen::VectorXd&, const Eigen::VectorXd&) override {
+      return quantity == audit::dynamics_quantity::forward ? std::optional<Eigen::VectorXd>(value.col(0)) : std::nullopt;
+    }
+  };
+  audit::dynamics_library l;
+  l.name = "off_by";
+  l.load = [quantity, x, eps_off](const rb::robot& r) -> std::unique_ptr<audit::dynamics_model> {
+    const audit::dynamics_residual ref = audit::reference_only(quantity, r, x);
+    auto m = std::make_unique<model>();
+    m->quantity = quantity;
+    m->value = ref.reference;
+    m->value(0, 0) += eps_off * 0x1p-52 * ref.scale;
+    return m;
+  };
+  return l;
+}
+
+TEST(dynamics_audit, the_budget_is_16_n_eps_of_the_scale_and_an_error_a_few_times_it_disagrees) {
+  // A 4-link chain: budget 16 n = 64 eps of each quantity's scale. An error of 48 eps is
+  // within it, 100 eps (between the budget and a few times it) is not, for every quantity.
+  const rb::robot r = chain({1.0, 0.8, 0.6, 0.5});
+  const audit::dynamics_state x = chain_state(4);
+  for (const auto q : {audit::dynamics_quantity::mass_matrix, audit::dynamics_quantity::bias,
+                       audit::dynamics_quantity::inverse, audit::dynamics_quantity::forward}) {
+    SCOPED_TRACE(audit::dynamics_quantity_name(q));
+    const audit::dynamics_check inside = audit::check_dynamics(off_by(q, x, 48), r, x);
+    ASSERT_EQ(inside.residuals.size(), 1u);
+    EXPECT_EQ(inside.residuals[0].budget, 64);
+    EXPECT_NEAR(inside.residuals[0].residual, 48, 1);
+    EXPECT_TRUE(inside.residuals[0].within());
+    const audit::dynamics_check outside = audit::check_dynamics(off_by(q, x, 100), r, x);
+    EXPECT_NEAR(outside.residuals[0].residual, 100, 1);
+    EXPECT_FALSE(outside.residuals[0].within());
+  }
+}
+
+TEST(dynamics_audit, the_forward_scale_carries_cond_m_on_an_ill_conditioned_robot) {
+  // Masses 1 and 2^-6 down a 2-link chain: cond(M) near 10^3. The forward dynamics' scale is
+  // cond(M) |qddot| + |M^-1| max(scale of h, |tau|) (docs/audit.md), all norms the largest row
+  // sum or component, computed here apart from the audit in mpfr50.
+  const rb::robot r = chain({1.0, 0x1p-6});
+  audit::dynamics_state x = chain_state(2);
+  const rb::robot_model<mpfr50> m(r);
+  dynamic_vector<mpfr50> q(2), v(2);
+  for (int i = 0; i < 2; ++i) q(i) = x.q(i), v(i) = x.qdot(i);
+  const auto terms = rb::motion_terms_at(m, q, v);
+  const dynamic_matrix<mpfr50> inv = terms.mass_matrix.inverse();
+  const auto row_sum = [](const dynamic_matrix<mpfr50>& a) {
+    mpfr50 best = 0;
+    for (Eigen::Index i = 0; i < a.rows(); ++i) best = std::max(best, mpfr50(a.row(i).cwiseAbs().sum()));
+    return static_cast<double>(best);
+  };
+  const double cond = row_sum(terms.mass_matrix) * row_sum(inv);
+  EXPECT_GT(cond, 100);
+  EXPECT_LT(cond, 3000);
+  dynamic_vector<mpfr50> tau(2);
+  for (int i = 0; i < 2; ++i) tau(i) = x.tau(i);
+  const dynamic_vector<mpfr50> qddot = inv * (tau - terms.bias);
+  const double qddot_max = static_cast<double>(mpfr50(qddot.cwiseAbs().maxCoeff()));
+  const double scale_h = audit::reference_only(audit::dynamics_quantity::bias, r, x).scale;
+  const double second = row_sum(inv) * std::max(scale_h, x.tau.cwiseAbs().maxCoeff());
+  // The cond(M) term is the larger here: a scale without it is off by more than a factor 2.
+  EXPECT_GT(cond * qddot_max, second);
+  const double scale = audit::reference_only(audit::dynamics_quantity::forward, r, x).scale;
+  EXPECT_NEAR(scale, cond * qddot_max + second, 1e-9 * scale);
+}
+
+TEST(dynamics_audit, a_second_check_at_the_same_q_and_qdot_uses_its_own_qddot_and_tau) {
+  // The reference is remembered across calls; two checks of one robot at the same q and qdot
+  // with other qddot and tau must each be held to their own inverse and forward dynamics.
+  const rb::robot r = chain({1.0, 0.8, 0.6});
+  const audit::dynamics_state first = chain_state(3, 1), second = chain_state(3, -1);
+  const audit::dynamics_library exact = wrong_library([](rb::robot&) {});
+  const audit::dynamics_check a = audit::check_dynamics(exact, r, first);
+  const audit::dynamics_check b = audit::check_dynamics(exact, r, second);
+  ASSERT_EQ(a.residuals.size(), 4u);
+  ASSERT_EQ(b.residuals.size(), 4u);
+  for (const auto* c : {&a, &b})
+    for (const auto& res : c->residuals)
+      EXPECT_TRUE(res.within()) << audit::dynamics_quantity_name(res.quantity) << ": " << res.residual << " eps";
+  // Inverse and forward dynamics differ between the two states; the mass matrix does not.
+  EXPECT_GT((a.residuals[2].reference - b.residuals[2].reference).cwiseAbs().maxCoeff(), 0.1);
+  EXPECT_GT((a.residuals[3].reference - b.residuals[3].reference).cwiseAbs().maxCoeff(), 0.1);
+  EXPECT_EQ(a.residuals[0].reference, b.residuals[0].reference);
+}
+
+TEST(dynamics_audit, a_users_robot_with_fixed_joints_gets_one_coordinate_per_moving_joint) {
+  // A user's URDF with two fixed joints among three moving ones, through the campaign's state
+  // generator (run_dynamics_on, the command's --urdf): three coordinates a state, every
+  // quantity within on every state.
+  rb::robot r = chain({1.0, 0.5, 0.7, 0.4, 0.6});
+  r.joints[1].type = rb::joint_type::fixed;
+  r.joints[3].type = rb::joint_type::fixed;
+  ASSERT_EQ(rb::validate(r).dofs, 3);
+  audit::dynamics_options opt;
+  opt.robots = 5;
+  const audit::dynamics_campaign c = audit::run_dynamics_on(wrong_library([](rb::robot&) {}), r, opt);
+  EXPECT_TRUE(c.agrees()) << c.note << c.disagreement;
+  EXPECT_EQ(c.robots, 5);
+  for (const auto& f : c.figures) {
+    EXPECT_EQ(f.checked, 5) << audit::dynamics_quantity_name(f.quantity);
+    EXPECT_EQ(audit::dynamics_verdict(c, f), "within");
+  }
+}
+
+TEST(dynamics_audit, a_campaign_that_stopped_never_clears_the_quantities_it_did_not_finish) {
+  // A library whose mass matrix is wrong: the campaign stops at its first disagreement. The
+  // other quantities were checked on the robots reached before it, not on the 40 asked for:
+  // they read "not cleared", with the count, never "within".
+  audit::dynamics_options opt;
+  opt.robots = 40;
+  const audit::dynamics_campaign c = audit::run_dynamics_campaign(
+      wrong_library([](rb::robot& r) {
+        for (auto& l : r.links)
+          if (l.body) l.body->inertia *= 1.001;
+      }),
+      opt);
+  ASSERT_FALSE(c.agrees());
+  EXPECT_TRUE(c.stopped());
+  EXPECT_EQ(c.asked, 40);
+  bool disagreed = false;
+  for (const auto& f : c.figures) {
+    const std::string v = audit::dynamics_verdict(c, f);
+    EXPECT_NE(v, "within") << audit::dynamics_quantity_name(f.quantity);
+    if (v == "DISAGREES") {
+      disagreed = true;
+      continue;
+    }
+    EXPECT_EQ(v.rfind("not ", 0), 0u) << v;
+    if (f.checked > 0)
+      EXPECT_NE(v.find(std::to_string(f.checked) + " of 40 robots"), std::string::npos) << v;
+  }
+  EXPECT_TRUE(disagreed);
 }
 
 }  // namespace robots_test

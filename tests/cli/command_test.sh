@@ -14,7 +14,7 @@ failed=0
 expect() {
   local status=$1 regex=$2
   shift 2
-  local out got
+  local out got begin=$SECONDS
   out=$("$audit" "$@" 2>&1)
   got=$?
   if [ "$got" != "$status" ] || ! grep -Eq -- "$regex" <<< "$out"; then
@@ -23,7 +23,7 @@ expect() {
     sed 's/^/    /' <<< "$out" | tail -n 8
     failed=1
   else
-    echo "ok: mechcheck-audit $* (status $got)"
+    echo "ok: mechcheck-audit $* (status $got, $(( SECONDS - begin )) s)"
   fi
 }
 
@@ -96,4 +96,21 @@ for section in "steppers \([0-9]+;" "adaptive drivers \([0-9]+;" "engine integra
   expect 0 "^$section" --list
 done
 expect 0 "The classical tableaus \(--tableau\): .*tableaus" --help
+# --help names every claim a tableau file may declare -- the fields the reader knows (its
+# error for an unknown one lists them), less those that are not claims -- in --require's
+# words and the exit status's.
+fields=$("$audit" --tableau "$work/typo.json" -t double -p oscillator --long-run-steps 0 -q -o "$work/typo" 2>&1 |
+         sed -n 's/.*(its fields: \([^)]*\)).*/\1/p' | head -n 1 | tr -d ',')
+[ -n "$fields" ] || { echo "FAILED: the tableau reader's error lists no fields"; failed=1; }
+help=$("$audit" --help | tr -s ' \n' ' ')
+for field in $fields; do
+  case $field in name|source|A|b|c|bhat|precision) continue ;; esac
+  [ "$(grep -o "($field)" <<< "$help" | wc -l)" -ge 2 ] ||
+    { echo "FAILED: --help does not name the claim $field in --require and the exit status"; failed=1; }
+done
+# A declared "no" states absence: Radau IIA 3 declared not L-stable (it is) is contradicted,
+# and --require fails on it.
+sed 's/^{/{"L_stable": false, /' "$source_dir/tableaus/radau_iia3.json" > "$work/radau.json"
+expect 2 "tableau::radau_iia3 .*L-stable declared no is contradicted" --tableau "$work/radau.json" --require '*' \
+  -t double -p oscillator --long-run-steps 0 -q -o "$work/radau"
 exit $failed

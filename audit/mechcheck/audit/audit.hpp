@@ -419,10 +419,9 @@ long_run run_long(const stepper_under_audit<T>& s, const problem<T>& pr,
     }
     const growth_class g = classify_growth(time, d.window_rms, floor, time_scale, double(done) * run.h, "problem");
     // An error of order one has saturated (the orbit escaped, the angle wrapped): its
-    // growth exponent then says nothing about the method.
-    const bool lost = d.max_relative >= 0.25;
-    if (!d.preserved && !lost) d.exponent = g.exponent;
-    d.kind = d.preserved ? "preserved to rounding" : lost ? "lost (error of order one)" : g.kind;
+    // growth exponent then says nothing about the method (invariant_class).
+    d.kind = invariant_class(d.max_relative, d.preserved, g.kind);
+    if (d.kind == g.kind) d.exponent = g.exponent;
     run.invariants.push_back(d);
   }
   return run;

@@ -160,6 +160,8 @@ using dynamics_checker = std::function<dynamics_check(const robots::robot&, cons
 /// the residual, and the seed that reproduces it.
 struct dynamics_campaign {
   std::string library, origin;
+  int asked = 0;  ///< the robots (or a user's robot's states) the campaign was asked to run
+  std::string unit = "robots";  ///< what it counts: "robots", or "states" of a user's robot
   int robots = 0, refused = 0;
   std::string first_refusal;  ///< the library's reason for the first robot it refused
   std::uint64_t seed = 0;
@@ -184,6 +186,8 @@ struct dynamics_campaign {
   std::string counterexample_urdf;
   std::string note;          ///< a library's failure (an error, a non-finite value), if any
   bool agrees() const { return disagreement.empty() && note.empty(); }
+  /// The campaign stopped before the robots asked for: at its first disagreement or failure.
+  bool stopped() const { return !agrees(); }
 };
 
 struct dynamics_options {
@@ -194,6 +198,16 @@ struct dynamics_options {
 };
 
 dynamics_campaign run_dynamics_campaign(const dynamics_library& library, const dynamics_options& options);
+
+/// The verdict of one quantity of a campaign, in words: "DISAGREES" (its residual above the
+/// budget, or the quantity of the shrunk disagreement); "failed" (the library failed);
+/// "not offered" (the library has no such function); "refused" (it took none of the
+/// robots); "within" only when it was checked on every robot the campaign ran to its end;
+/// a campaign that stopped at a disagreement or failure says of every other quantity on
+/// how many robots it was within before the stop, never "within" alone ("not cleared:
+/// within on 3 of 100 robots, the campaign stopped"); likewise a quantity checked on fewer
+/// robots than asked (the others refused) says how many.
+std::string dynamics_verdict(const dynamics_campaign& c, const dynamics_campaign::quantity_figure& f);
 
 /// A user's robot (a URDF file's) at `states` random states.
 dynamics_campaign run_dynamics_on(const dynamics_library& library, const robots::robot& robot,

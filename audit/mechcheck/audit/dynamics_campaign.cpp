@@ -45,6 +45,8 @@ dynamics_campaign campaign(const std::string& name, const std::string& origin, c
   dynamics_campaign c;
   c.library = name;
   c.origin = origin;
+  c.asked = opt.robots;
+  if (user) c.unit = "states";
   c.seed = opt.seed;
   c.max_links = opt.max_links;
   for (const auto q : {dynamics_quantity::mass_matrix, dynamics_quantity::bias, dynamics_quantity::inverse,
@@ -164,11 +166,26 @@ std::string sci(double x) {
   std::snprintf(buf, sizeof buf, "%.2g", x);
   return buf;
 }
-std::string verdict_of(const dynamics_campaign& c, const dynamics_campaign::quantity_figure& f) {
-  if (f.checked == 0) return "not offered";
-  if (!c.note.empty()) return "failed";
+}  // namespace
+
+std::string dynamics_verdict(const dynamics_campaign& c, const dynamics_campaign::quantity_figure& f) {
+  const std::string unit = " " + c.unit;
   if (!c.disagreement.empty() && c.disagreement.rfind(dynamics_quantity_name(f.quantity), 0) == 0) return "DISAGREES";
-  return f.largest <= f.budget ? "within" : "DISAGREES";
+  if (f.checked > 0 && f.largest > f.budget) return "DISAGREES";
+  if (!c.note.empty()) return "failed";
+  if (f.checked == 0) {
+    if (c.stopped()) return "not reached: the campaign stopped at its first disagreement";
+    return c.robots > 0 && c.refused == c.robots ? "refused" : "not offered";
+  }
+  const std::string count = std::to_string(f.checked) + " of " + std::to_string(c.asked);
+  if (c.stopped()) return "not cleared: within on " + count + unit + ", the campaign stopped at its first disagreement";
+  if (f.checked < c.asked) return "within on " + count + unit + " (" + std::to_string(c.refused) + " refused)";
+  return "within";
+}
+
+namespace {
+std::string verdict_of(const dynamics_campaign& c, const dynamics_campaign::quantity_figure& f) {
+  return dynamics_verdict(c, f);
 }
 }  // namespace
 

@@ -321,18 +321,22 @@ void run_long(const engine_integrator& in, const scenario& s, const engine_optio
     std::sort(std::begin(third), std::end(third));
     a.seconds_per_step = third[1];
   }
+  // The classes of every audit's invariants (invariant_class): preserved within the
+  // rounding budget of the run, lost at an error of order one, else the growth class.
+  const double budget = engine_rounding_budget(in.epsilon, static_cast<double>(a.long_run_steps));
+  const bool whole = a.long_run_failure.empty();
   if (s.conserves_energy) {
     const growth_class c = growth_of(energy, s, a.long_run_steps, in.epsilon, e_magnification);
-    a.energy_growth = c.exponent;
-    a.energy_class = c.kind;
     a.energy_max = energy.max_error();
+    a.energy_class = invariant_class(a.energy_max, whole && a.energy_max <= e_magnification * budget, c.kind);
+    if (a.energy_class == c.kind) a.energy_growth = c.exponent;
     a.energy_history = history(energy, s.h_long);
   }
   if (momentum_kept) {
     const growth_class c = growth_of(momentum, s, a.long_run_steps, in.epsilon);
-    a.momentum_growth = c.exponent;
-    a.momentum_class = c.kind;
     a.momentum_max = momentum.max_error();
+    a.momentum_class = invariant_class(a.momentum_max, whole && a.momentum_max <= budget, c.kind);
+    if (a.momentum_class == c.kind) a.momentum_growth = c.exponent;
     a.momentum_history = history(momentum, s.h_long);
   }
 }
@@ -482,12 +486,9 @@ std::optional<long_run> energy_run(const scenario& s, const engine_scenario_audi
   d.name = "energy";
   d.max_relative = a.energy_max;
   d.budget_relative = engine_rounding_budget(u, static_cast<double>(a.long_run_steps));
-  d.preserved = a.long_run_failure.empty() && d.max_relative <= d.budget_relative;
+  d.preserved = a.energy_class == "preserved to rounding";
   d.exponent = a.energy_growth;
-  d.kind = d.preserved ? "preserved to rounding"
-           : d.max_relative >= 0.25 || !std::isfinite(d.max_relative) ? "lost (error of order one)"
-           : a.energy_class.empty() ? "not resolved"
-                                    : a.energy_class;
+  d.kind = a.energy_class.empty() ? invariant_class(d.max_relative, d.preserved, "not resolved") : a.energy_class;
   run.invariants.push_back(d);
   return run;
 }

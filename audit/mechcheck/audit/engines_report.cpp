@@ -24,9 +24,11 @@ std::string sci(double x) {
   std::snprintf(buf, sizeof buf, "%.1e", x);
   return buf;
 }
-/// "bounded (t^0.01, max 2.5e-07)", "not resolvable: ... (max ...)", or "-" (not run).
+/// "bounded (t^0.01, max 2.5e-07)", "lost: not conserved (error of order one, max 0.98)",
+/// "not resolvable: ... (max ...)", or "-" (not run).
 std::string growth(const std::string& kind, const std::optional<double>& g, double max) {
   if (kind.empty()) return "-";
+  if (kind == lost_class) return "lost: not conserved (error of order one, max " + sci(max) + ")";
   char buf[64];
   if (g && std::isfinite(*g)) std::snprintf(buf, sizeof buf, " (t^%.2f, max %s)", *g, sci(max).c_str());
   else std::snprintf(buf, sizeof buf, " (max %s)", sci(max).c_str());
@@ -84,13 +86,16 @@ void print_engines(std::ostream& out, const std::vector<engine_audit>& audits, c
     for (const auto& s : a.scenarios)
       rows.push_back({a.integrator, s.scenario, fit_text(s), growth(s.energy_class, s.energy_growth, s.energy_max),
                       growth(s.momentum_class, s.momentum_growth, s.momentum_max)});
-  const std::vector<std::string> lines = format_columns(std::move(rows), {56, 24, 60, 44, 44}, cut);
+  const std::vector<std::string> lines = format_columns(std::move(rows), {56, 24, 60, 56, 56}, cut);
   out << lines.front() << "\n";
   std::size_t row = 1;
   for (const auto& a : audits) {
     for (const auto& s : a.scenarios) {
       out << lines[row++] << "\n";
       if (!s.failure.empty()) out << "    failed: " << clip(s.failure) << "\n";
+      if (!s.long_run_failure.empty())
+        out << "    long run stopped after " << s.long_run_steps << " steps, diverged or failed at " << clip(s.long_run_failure)
+            << "\n";
       if (s.constraint_max) out << "    constraint: " << clip(constraint_text(s)) << "\n";
       if (!s.model_differs.empty()) out << "    order not judged: " << clip(s.model_differs) << "\n";
       if (!s.held.empty()) out << "    " << s.scenario << ": " << clip(s.held) << "\n";

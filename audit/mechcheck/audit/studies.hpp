@@ -345,6 +345,21 @@ inline std::string growth_kind(double g) {
   return "faster than linear";
 }
 
+/// The classes of a conserved quantity's long-run error, the same in every audit (the
+/// stepper audit's invariants, the engines' energy and angular momentum on every scenario,
+/// their random robots and bodies included):
+///  - "lost: not conserved (error of order one)" -- its largest error is a quarter of the
+///    quantity's scale or more, or not finite: the conservation law is broken, whatever the
+///    windows' slope (a jump to a plateau reads t^0, which is not a bounded drift);
+///  - "preserved to rounding" -- its largest error within the run's rounding budget;
+///  - otherwise the growth class of its windows (classify_growth).
+inline constexpr const char* lost_class = "lost: not conserved (error of order one)";
+inline std::string invariant_class(double max_relative, bool preserved, const std::string& growth) {
+  if (!(max_relative < 0.25)) return lost_class;
+  if (preserved) return "preserved to rounding";
+  return growth;
+}
+
 /// The growth class of a long run's error from its windows (growth_recorder's): window w's
 /// mean time time[w], RMS rms[w] and the rounding floor floor[w] at its step count (`owner`
 /// names what the time scale is of in the words: "scenario", "problem"). A start-up

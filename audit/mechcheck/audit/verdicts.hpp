@@ -345,9 +345,10 @@ inline verdict judge_order(const claims& c, const std::vector<problem_audit>& ps
 /// a defect within the budget of a tier of that epsilon is what such coefficients allow.
 ///   declared yes: confirmed when within everywhere; to the precision given when within
 ///     what the coefficients allow; contradicted by a defect above that;
-///   declared no: confirmed by a defect above what the coefficients allow on some problem;
-///     a defect within the tier's rounding budget (AD) is not resolvable in a tier coarser
-///     than 1e-20 (a lower floor would resolve it: -t mpfr50), exceeds in a finer one; a
+///   declared no (a statement that the property is absent): confirmed by a defect above
+///     what the coefficients allow on some problem; a defect within the tier's rounding
+///     budget (AD) is not resolvable in a tier coarser than 1e-20 (a lower floor would
+///     resolve it: -t mpfr50), contradicted in a finer one (the property holds); a
 ///     defect within what the coefficients allow is not resolvable; by finite differences
 ///     not resolvable (a high-order method's defect may lie below their resolution).
 template <class Member>
@@ -415,7 +416,7 @@ verdict judge_property(const char* name, const std::optional<bool>& claim,
     v.result = outcome::not_resolvable;
     v.needs = "a tier with a lower rounding floor (-t mpfr50): the defect lies within this tier's rounding budget";
   } else {
-    v.result = outcome::exceeds;
+    v.result = outcome::contradicted;  // a declared "no" states absence (docs/audit.md, "A declared no")
     v.evidence += "within the rounding budget on every problem measured, though declared not";
   }
   return v;
@@ -439,12 +440,18 @@ inline verdict judge_energy(const claims& c, const std::vector<problem_audit>& p
       continue;
     const drift& e = p.run->invariants.front();
     if (!p.run->failure.empty()) {
-      evidence += p.problem + ": the long run failed (" + p.run->failure + "); ";
-      if (e.max_relative >= 0.25) {
-        any = true;
-        bounded = false;
+      // A run cut short (a step that failed, a state that diverged) never reads as a
+      // clearance: an error of order one before it stopped is lost, else it is undecided.
+      any = true;
+      bounded = false;
+      evidence += p.problem + ": the long run stopped after " + std::to_string(p.run->steps) + " steps (" +
+                  p.run->failure + "), its energy error up to " + detail::sci(e.max_relative) + "; ";
+      if (!(e.max_relative < 0.25)) {
         drifts = true;
-        worst = "lost";
+        worst = lost_class;
+      } else {
+        undecided = true;
+        if (worst == "-" || worst.rfind("bounded", 0) == 0) worst = "cut short";
       }
       continue;
     }
@@ -455,8 +462,7 @@ inline verdict judge_energy(const claims& c, const std::vector<problem_audit>& p
     const bool kept = e.preserved || e.kind == "bounded";
     const bool rounding_walk = e.kind == "random walk" &&
                                e.max_relative <= rules::rounding_walk_budgets * e.budget_relative;
-    const bool grows = e.kind == "linear drift" || e.kind == "faster than linear" ||
-                       e.kind == "lost (error of order one)";
+    const bool grows = e.kind == "linear drift" || e.kind == "faster than linear" || e.kind == lost_class;
     if (kept || rounding_walk) {
       if (worst == "-") worst = rounding_walk ? "bounded (rounding walks)" : "bounded";
     } else if (grows) {
@@ -504,6 +510,17 @@ inline verdict with_algebra(const verdict& measured, const claims& c) {
   v.measured = a->measured + " (algebra)";
   // Confirmed and "to the precision given" say the same of a claim: the two agree.
   const auto holds = [](outcome o) { return o == outcome::confirmed || o == outcome::to_precision_given; };
+  // "To the precision given" is the algebra's word for conditions that hold to the
+  // coefficients' precision and no further. A measurement confirmed at the tier's own
+  // floors did not resolve that precision (a defect of that size would have shown as a
+  // stall or a defect above the floors, and judge_order would have said "to the precision
+  // given"): it confirms the claim, and the algebra's residual is quoted beside it.
+  if (a->result == outcome::to_precision_given && measured.result == outcome::confirmed) {
+    v = measured;
+    v.evidence = "measured: " + measured.evidence + " The coefficients' algebra: " + a->evidence +
+                 " (to the precision given; the measurement does not resolve that precision)";
+    return v;
+  }
   const bool differ = a->result != measured.result && !(holds(a->result) && holds(measured.result));
   v.evidence = "the coefficients' algebra decides: " + a->evidence + ". The stepper measured: " +
                outcome_text(measured.result) + (measured.needs.empty() ? "" : " (needs " + measured.needs + ")") +
