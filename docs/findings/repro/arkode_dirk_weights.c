@@ -97,6 +97,25 @@ static long double weight_sum_minus_one(const realtype* w, int stages) {
   return sum - 1;
 }
 
+/* The scales of the same conditions, the size of their terms (sum |w_i|, and
+ * sum |w_i| (|A| 1)_i times the condition's degree 2): each defect over its scale is the
+ * relative residual an analyser of the table states for it. */
+static long double weight_sum_scale(const realtype* w, int stages) {
+  long double sum = 0;
+  for (int i = 0; i < stages; ++i) sum += fabsl((long double)w[i]);
+  return sum;
+}
+
+static long double order2_scale(ARKodeButcherTable t, const realtype* w) {
+  long double sum = 0;
+  for (int i = 0; i < t->stages; ++i) {
+    long double row = 0;
+    for (int j = 0; j < t->stages; ++j) row += fabsl((long double)t->A[i][j]);
+    sum += fabsl((long double)w[i]) * row;
+  }
+  return 2 * sum;
+}
+
 static long double order2_defect(ARKodeButcherTable t, const realtype* w) {
   long double sum = 0;
   for (int i = 0; i < t->stages; ++i) {
@@ -126,6 +145,9 @@ int main(void) {
     printf("%s_embedding_weight_sum_minus_one %.3Le\n", tables[k].name, weight_sum_minus_one(t->d, t->stages));
     printf("%s_order2_defect %.3Le\n", tables[k].name, order2_defect(t, t->b));
     printf("%s_embedding_order2_defect %.3Le\n", tables[k].name, order2_defect(t, t->d));
+    printf("%s_weight_sum_relative %.3Le\n", tables[k].name,
+           fabsl(weight_sum_minus_one(t->b, t->stages)) / weight_sum_scale(t->b, t->stages));
+    printf("%s_embedding_order2_relative %.3Le\n", tables[k].name, fabsl(order2_defect(t, t->d)) / order2_scale(t, t->d));
     printf("%s_gamma %.17g\n", tables[k].name, t->A[0][0]);
     ARKodeButcherTable_Free(t);
     const double zero = 0;
