@@ -48,12 +48,20 @@ std::string state_text(const state<mpfr50>& x) {
   return json{{"q", vector_json(x.q)}, {"p", vector_json(x.p)}}.dump();
 }
 
-reference_cache::reference_cache(std::optional<std::filesystem::path> directory) : directory_(std::move(directory)) {
+reference_cache::reference_cache(std::optional<std::filesystem::path> directory, bool writable)
+    : directory_(std::move(directory)), writable_(writable) {
   if (!directory_) {
     note_ = "no cache directory";
     return;
   }
   std::error_code ec;
+  if (!writable_) {
+    if (!std::filesystem::is_directory(*directory_, ec)) {
+      note_ = "no directory " + directory_->string();
+      directory_.reset();
+    }
+    return;
+  }
   std::filesystem::create_directories(*directory_, ec);
   if (ec || !std::filesystem::is_directory(*directory_)) {
     note_ = "the cache directory " + directory_->string() + " cannot be created (" + ec.message() +
@@ -72,6 +80,33 @@ reference_cache reference_cache::from_environment() {
   return reference_cache(std::nullopt);
 }
 
+const reference_cache& reference_cache::shipped() {
+  static const reference_cache data = [] {
+    if (const char* dir = std::getenv("MECHCHECK_REFERENCE_DATA"))
+      return reference_cache(*dir && std::string_view(dir) != "none" ? std::optional<std::filesystem::path>(dir)
+                                                                      : std::nullopt,
+                             false);
+    // The installed share/mechcheck/references (where the package was installed, or next
+    // to the program's bin/), else the source tree's references/ (a build tree's program).
+    std::error_code ec;
+#ifdef MECHCHECK_INSTALLED_REFERENCES
+    if (std::filesystem::is_directory(MECHCHECK_INSTALLED_REFERENCES, ec))
+      return reference_cache(std::filesystem::path(MECHCHECK_INSTALLED_REFERENCES), false);
+#endif
+    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+      const auto installed = self.parent_path().parent_path() / "share" / "mechcheck" / "references";
+      if (std::filesystem::is_directory(installed, ec)) return reference_cache(installed, false);
+    }
+#ifdef MECHCHECK_SOURCE_REFERENCES
+    if (std::filesystem::is_directory(MECHCHECK_SOURCE_REFERENCES, ec))
+      return reference_cache(std::filesystem::path(MECHCHECK_SOURCE_REFERENCES), false);
+#endif
+    return reference_cache(std::nullopt, false);
+  }();
+  return data;
+}
+
 std::optional<certified_state> reference_cache::load(const std::string& key) const {
   if (!directory_) return std::nullopt;
   const std::filesystem::path path = *directory_ / (fnv1a_hex(key) + ".json");
@@ -81,12 +116,12 @@ std::optional<certified_state> reference_cache::load(const std::string& key) con
     const json doc = json::parse(in);
     // Every field this version writes, and no other: a file with a field it does not know
     // (written by another version, or edited) is not read as if the field were absent.
-    static constexpr std::array<std::string_view, 8> known{"key",     "solver", "digits", "steps", "seconds",
-                                                           "history", "q",      "p"};
+    static constexpr std::array<std::string_view, 9> known{"key",     "solver", "made_by", "digits", "steps",
+                                                           "seconds", "history", "q",      "p"};
     for (const auto& field : doc.items())
       if (std::find(known.begin(), known.end(), field.key()) == known.end()) {
         note_ = path.string() + " holds the field \"" + field.key() +
-                "\", not one this version writes (key, solver, digits, steps, seconds, history, q, p): the "
+                "\", not one this version writes (key, solver, made_by, digits, steps, seconds, history, q, p): the "
                 "reference is computed";
         return std::nullopt;
       }
@@ -110,7 +145,7 @@ std::optional<certified_state> reference_cache::load(const std::string& key) con
 }
 
 void reference_cache::store(const std::string& key, const certified_state& value) const {
-  if (!directory_) return;
+  if (!directory_ || !writable_) return;
   json history = json::array();
   for (const auto& [n, d] : value.history) history.push_back({n, d});
   const json doc{{"key", key},

@@ -11,6 +11,13 @@
 /// The directory: MECHCHECK_CACHE_DIR if set (empty: no cache), else $XDG_CACHE_HOME/mechcheck,
 /// else $HOME/.cache/mechcheck. A directory that cannot be created or written is no cache:
 /// the references are computed each time, and `note()` says why.
+///
+/// The references certified for the built-in problems and scenarios ship with mechcheck as
+/// data (references/ in the source tree, share/mechcheck/references installed), in the
+/// same files less their certification's wall time and with the code that made them
+/// ("made_by"): `shipped()` reads them, before the user's cache, and never writes there.
+/// MECHCHECK_REFERENCE_DATA names another directory, or "none" for no shipped data (how
+/// ci/references certifies them again and compares them byte for byte).
 
 #include <filesystem>
 #include <optional>
@@ -22,10 +29,13 @@ namespace mechcheck::audit {
 
 class reference_cache {
  public:
-  /// The cache in `directory` (nothing: no cache).
-  explicit reference_cache(std::optional<std::filesystem::path> directory);
+  /// The cache in `directory` (nothing: no cache); a read-only one is not created and
+  /// never written.
+  explicit reference_cache(std::optional<std::filesystem::path> directory, bool writable = true);
   /// The cache of the environment (see the header).
   static reference_cache from_environment();
+  /// The shipped references (see the header): read-only.
+  static const reference_cache& shipped();
 
   /// The reference stored under `key`, if there is one and it is whole.
   std::optional<certified_state> load(const std::string& key) const;
@@ -40,6 +50,7 @@ class reference_cache {
  private:
   mutable std::optional<std::filesystem::path> directory_;
   mutable std::string note_;
+  bool writable_ = true;
 };
 
 /// 64-bit FNV-1a of `text`, in 16 hexadecimal digits.

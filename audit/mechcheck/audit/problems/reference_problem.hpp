@@ -74,7 +74,9 @@ class reference_source {
     auto it = memo_.find(tk);
     if (it != memo_.end()) return it->second;
     const std::string key = key_ + "|t=" + tk + "|" + reference_solver_version;
-    std::optional<certified_state> c = settings_.cache ? settings_.cache->load(key) : std::nullopt;
+    // The shipped references first (read-only), then the user's cache, else certified here.
+    std::optional<certified_state> c = reference_cache::shipped().load(key);
+    if (!c && settings_.cache) c = settings_.cache->load(key);
     if (!c) {
       c = solve_(t, short_time);
       if (settings_.cache) settings_.cache->store(key, *c);
