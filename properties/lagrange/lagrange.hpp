@@ -86,10 +86,9 @@ struct charge_function {
 template <class T, class L, class G, class F>
 std::pair<T, T> charge_rate(const L& lag, const G& generator, const F& f,
                             const dynamic_vector<T>& q, const dynamic_vector<T>& qdot,
-                            const T& t) {
+                            const T& t, const dynamic_vector<T>& a) {
   using std::abs;
   const Eigen::Index n = q.size();
-  const dynamic_vector<T> a = mc::accelerations(lag, q, qdot, t);
   const charge_function<L, G, F> charge{lag, generator, f};
   const auto stacked = [&charge, n]<class S>(const dynamic_vector<S>& z) -> S {
     const dynamic_vector<S> qq = z.head(n), vv = z.segment(n, n);
@@ -106,6 +105,15 @@ std::pair<T, T> charge_rate(const L& lag, const G& generator, const F& f,
     scale += abs(term);
   }
   return {rate, at_least_one(scale)};
+}
+
+/// The same, the accelerations on shell computed here (pass them to the overload above
+/// when several charges are taken at one state: each is a Hessian solve of L by AD).
+template <class L, class G, class F, class T>
+std::pair<T, T> charge_rate(const L& lag, const G& generator, const F& f,
+                            const dynamic_vector<T>& q, const dynamic_vector<T>& qdot,
+                            const T& t) {
+  return charge_rate(lag, generator, f, q, qdot, t, dynamic_vector<T>(mc::accelerations(lag, q, qdot, t)));
 }
 
 /// The momenta p = dL/dqdot as a function of (q, qdot, t), for their total time derivative.
