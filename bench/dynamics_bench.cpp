@@ -18,7 +18,7 @@
 #include <rapidcheck.h>
 
 #include "mechcheck/audit/adapters/found.hpp"
-#include "mechcheck/audit/dynamics.hpp"
+#include "mechcheck/audit/dynamics/dynamics.hpp"
 #include "mechcheck/harness/generators.hpp"
 #include "mechcheck/robots.hpp"
 

@@ -17,8 +17,8 @@
 
 #include "../tests/exec/pendulum.hpp"
 #include "mechcheck/audit/adapters/exec.hpp"
-#include "mechcheck/audit/black_box.hpp"
-#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/steppers/black_box.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
 
 #ifndef MECHCHECK_EXEC_CHILD
 #error "the build defines MECHCHECK_EXEC_CHILD"

@@ -1,4 +1,4 @@
-/// The cost of the order conditions by rooted trees in mpfr100 (audit/order_conditions.hpp):
+/// The cost of the order conditions by rooted trees in mpfr100 (audit/tableaus/order_conditions.hpp):
 /// every tree of orders 1..P for the s-stage Gauss-Legendre tableau, P up to the default
 /// budget's reach. The counters: trees evaluated, stored stage values and the seconds per
 /// tree. docs/performance.md quotes it; the default budget (2^23 stored values, 2^28
@@ -8,7 +8,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "mechcheck/audit/order_conditions.hpp"
+#include "mechcheck/audit/tableaus/order_conditions.hpp"
 #include "mechcheck/integrators/gauss_legendre.hpp"
 
 namespace {

@@ -16,11 +16,11 @@
 #include <nlohmann/json.hpp>
 
 #include "mechcheck/audit/audit.hpp"
-#include "mechcheck/audit/drivers.hpp"
-#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/drivers/drivers.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
 #include "mechcheck/audit/finite_differences.hpp"
 #include "mechcheck/audit/report.hpp"
-#include "mechcheck/audit/builtin.hpp"
+#include "mechcheck/audit/steppers/builtin.hpp"
 #include "mechcheck/audit/adapters/odeint.hpp"
 #include "synthetic_study.hpp"
 

@@ -10,9 +10,9 @@
 #include <string>
 
 #include "mechcheck/audit/audit.hpp"
-#include "mechcheck/audit/black_box.hpp"
+#include "mechcheck/audit/steppers/black_box.hpp"
 #include "mechcheck/audit/finite_differences.hpp"
-#include "mechcheck/audit/tableau.hpp"
+#include "mechcheck/audit/tableaus/tableau.hpp"
 #include "mechcheck/integrators.hpp"
 
 namespace black_box_test {

@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "mechcheck/audit/audit.hpp"
-#include "mechcheck/audit/drivers.hpp"
+#include "mechcheck/audit/drivers/drivers.hpp"
 #include "mechcheck/audit/adapters/found.hpp"
 #ifdef MECHCHECK_HAVE_GSL
 #include "mechcheck/audit/adapters/gsl.hpp"

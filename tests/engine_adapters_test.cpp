@@ -11,7 +11,7 @@
 
 #include <Eigen/Geometry>
 
-#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
 #include "mechcheck/audit/adapters/found.hpp"
 #include "mechcheck/audit/studies.hpp"
 

@@ -8,7 +8,7 @@
 #include <limits>
 #include <sstream>
 
-#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
 #include "mechcheck/audit/studies.hpp"
 #include "mechcheck/reference/tops.hpp"
 #include "reference_engine.hpp"

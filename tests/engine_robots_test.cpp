@@ -1,4 +1,4 @@
-// Robots as engine scenarios (problems/scenarios.hpp: robot_scenario, random_robot_scenarios)
+// Robots as engine scenarios (engines/scenarios.hpp: robot_scenario, random_robot_scenarios)
 // against answers known without them: a one-link robot's reference is the pendulum's
 // elliptic solution; a reference engine written here (RK4 on the robot's forward dynamics,
 // robots/dynamics.hpp) is of order 4 on a robot with skew axes, a slide and rotated
@@ -13,7 +13,7 @@
 #include <limits>
 
 #include "mechcheck/audit/adapters/found.hpp"
-#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
 #include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/reference/pendulum.hpp"
 #include "mechcheck/robots/dynamics.hpp"

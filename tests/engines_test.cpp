@@ -15,7 +15,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
 #include "mechcheck/audit/studies.hpp"
 #include "mechcheck/integrators.hpp"
 #include "mechcheck/reference/tops.hpp"

@@ -23,10 +23,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "mechcheck/audit/black_box.hpp"
-#include "mechcheck/audit/drivers.hpp"
+#include "mechcheck/audit/steppers/black_box.hpp"
+#include "mechcheck/audit/drivers/drivers.hpp"
 #include "mechcheck/audit/adapters/exec.hpp"
-#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
 
 #ifndef MECHCHECK_EXEC_CHILD
 #error "the build defines MECHCHECK_EXEC_CHILD, the path of tests/exec/child.cpp's program"

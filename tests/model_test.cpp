@@ -14,7 +14,7 @@
 #include <tuple>
 
 #include "mechcheck/audit/audit.hpp"
-#include "mechcheck/audit/model.hpp"
+#include "mechcheck/audit/problems/model.hpp"
 #include "mechcheck/audit/problems/classic.hpp"
 #include "mechcheck/integrators/steppers.hpp"
 #include "scratch.hpp"

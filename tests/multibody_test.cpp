@@ -11,7 +11,7 @@
 #include <cmath>
 #include <limits>
 
-#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
 #include "mechcheck/audit/adapters/found.hpp"
 #include "mechcheck/audit/problems/chains.hpp"
 #include "mechcheck/integrators.hpp"

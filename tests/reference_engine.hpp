@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
 
 namespace engines_test {
 namespace audit = mechcheck::audit;

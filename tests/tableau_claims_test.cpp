@@ -15,9 +15,9 @@
 #include <string>
 
 #include "mechcheck/audit/audit.hpp"
-#include "mechcheck/audit/order_conditions.hpp"
-#include "mechcheck/audit/tableau.hpp"
-#include "mechcheck/audit/tableau_file.hpp"
+#include "mechcheck/audit/tableaus/order_conditions.hpp"
+#include "mechcheck/audit/tableaus/tableau.hpp"
+#include "mechcheck/audit/tableaus/tableau_file.hpp"
 #include "mechcheck/integrators/gauss_legendre.hpp"
 
 namespace tableau_claims_test {

@@ -16,9 +16,9 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "mechcheck/audit/order_conditions.hpp"
-#include "mechcheck/audit/tableau.hpp"
-#include "mechcheck/audit/tableau_file.hpp"
+#include "mechcheck/audit/tableaus/order_conditions.hpp"
+#include "mechcheck/audit/tableaus/tableau.hpp"
+#include "mechcheck/audit/tableaus/tableau_file.hpp"
 #include "mechcheck/audit/verdicts.hpp"
 #include "mechcheck/integrators/gauss_legendre.hpp"
 #include "scratch.hpp"

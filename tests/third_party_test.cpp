@@ -8,13 +8,13 @@
 #include <string>
 
 #include "mechcheck/audit/audit.hpp"
-#include "mechcheck/audit/black_box.hpp"
+#include "mechcheck/audit/steppers/black_box.hpp"
 #ifdef MECHCHECK_HAVE_GSL
 #include "mechcheck/audit/adapters/gsl.hpp"
 #endif
 #ifdef MECHCHECK_HAVE_ARKODE
 #include "mechcheck/audit/adapters/arkode.hpp"
-#include "mechcheck/audit/tableau.hpp"
+#include "mechcheck/audit/tableaus/tableau.hpp"
 #endif
 
 namespace third_party_test {

@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "mechcheck/audit/user_dynamics.hpp"
+#include "mechcheck/audit/dynamics/user_dynamics.hpp"
 
 namespace user_dynamics_test {
 using namespace mechcheck;

@@ -5,7 +5,7 @@
 #include <iostream>
 #include <vector>
 
-#include <mechcheck/audit/black_box.hpp>
+#include <mechcheck/audit/steppers/black_box.hpp>
 #include <mechcheck/audit/report.hpp>
 
 namespace {

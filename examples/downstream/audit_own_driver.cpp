@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include <mechcheck/audit/drivers.hpp>
+#include <mechcheck/audit/drivers/drivers.hpp>
 #include <mechcheck/core/errors.hpp>
 
 namespace downstream {

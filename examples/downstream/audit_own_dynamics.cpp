@@ -8,9 +8,9 @@
 #include <iostream>
 #include <string>
 
-#include <mechcheck/audit/dynamics.hpp>
+#include <mechcheck/audit/dynamics/dynamics.hpp>
 #include <mechcheck/audit/problems/urdf.hpp>
-#include <mechcheck/audit/user_dynamics.hpp>
+#include <mechcheck/audit/dynamics/user_dynamics.hpp>
 
 namespace downstream {
 

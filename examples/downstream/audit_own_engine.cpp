@@ -7,7 +7,7 @@
 #include <memory>
 
 #include <Eigen/Geometry>
-#include <mechcheck/audit/engines.hpp>
+#include <mechcheck/audit/engines/engines.hpp>
 
 namespace {
 namespace audit = mechcheck::audit;

@@ -8,7 +8,7 @@
 #include <string>
 
 #include <mechcheck/audit/audit.hpp>
-#include <mechcheck/audit/model.hpp>
+#include <mechcheck/audit/problems/model.hpp>
 #include <mechcheck/audit/report.hpp>
 
 #include "position_verlet.hpp"

@@ -6,8 +6,8 @@
 
 #include <mechcheck/audit/audit.hpp>
 #include <mechcheck/audit/report.hpp>
-#include <mechcheck/audit/tableau.hpp>
-#include <mechcheck/audit/tableau_file.hpp>
+#include <mechcheck/audit/tableaus/tableau.hpp>
+#include <mechcheck/audit/tableaus/tableau_file.hpp>
 
 int main(int argc, char** argv) {
   namespace audit = mechcheck::audit;

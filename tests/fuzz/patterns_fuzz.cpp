@@ -6,7 +6,7 @@
 #include <string>
 
 #include "../../tools/audit/patterns.hpp"
-#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   namespace tool = mechcheck::audit_tool;

@@ -1,11 +1,11 @@
-// libFuzzer target: the tableau reader (audit/tableau_file.hpp) on arbitrary bytes. Every
+// libFuzzer target: the tableau reader (audit/tableaus/tableau_file.hpp) on arbitrary bytes. Every
 // input is a tableau or a tableau_error naming what is wrong; nothing else may escape, crash,
 // hang or allocate without bound (ci/fuzz runs it under AddressSanitizer with a memory limit).
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
 
-#include "mechcheck/audit/tableau_file.hpp"
+#include "mechcheck/audit/tableaus/tableau_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   namespace audit = mechcheck::audit;

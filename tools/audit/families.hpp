@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "mechcheck/audit/black_box.hpp"
+#include "mechcheck/audit/steppers/black_box.hpp"
 #include "mechcheck/audit/result.hpp"
-#include "mechcheck/audit/tableau_file.hpp"
+#include "mechcheck/audit/tableaus/tableau_file.hpp"
 
 namespace mechcheck::audit_tool {
 

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "mechcheck/audit/adapters/arkode.hpp"
-#include "mechcheck/audit/black_box.hpp"
-#include "mechcheck/audit/tableau.hpp"
-#include "mechcheck/audit/tableau_file.hpp"
+#include "mechcheck/audit/steppers/black_box.hpp"
+#include "mechcheck/audit/tableaus/tableau.hpp"
+#include "mechcheck/audit/tableaus/tableau_file.hpp"
 #include "run_family.hpp"
 
 namespace mechcheck::audit_tool {

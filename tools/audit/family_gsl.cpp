@@ -1,5 +1,5 @@
 // GSL's one-step types as black boxes, in double (built where GSL is found).
-#include "mechcheck/audit/black_box.hpp"
+#include "mechcheck/audit/steppers/black_box.hpp"
 #include "mechcheck/audit/adapters/gsl.hpp"
 #include "run_family.hpp"
 

@@ -1,9 +1,9 @@
 // Tableaus from files (--tableau FILE): each one's stepper through mechcheck's Runge-Kutta
 // stepper, named tableau::<name> (and tableau::<name>/embedding for a file with bhat),
 // declaring what the file declares; and the steppers of --exec-stepper children.
-#include "mechcheck/audit/black_box.hpp"
-#include "mechcheck/audit/tableau.hpp"
-#include "mechcheck/audit/tableau_file.hpp"
+#include "mechcheck/audit/steppers/black_box.hpp"
+#include "mechcheck/audit/tableaus/tableau.hpp"
+#include "mechcheck/audit/tableaus/tableau_file.hpp"
 #include "run_family.hpp"
 
 namespace mechcheck::audit_tool {

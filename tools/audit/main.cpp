@@ -29,7 +29,7 @@
 #include "mechcheck/audit/problems/classic.hpp"
 #include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/audit/report.hpp"
-#include "mechcheck/audit/tableau_file.hpp"
+#include "mechcheck/audit/tableaus/tableau_file.hpp"
 #include "patterns.hpp"
 #include "run_family.hpp"
 

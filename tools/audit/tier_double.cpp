@@ -1,6 +1,6 @@
 // The two families of mechcheck-audit in double: one translation unit, since they share the
 // audit's instantiations in the tier (25 s of compiler time against 42-46 s for two).
-#include "mechcheck/audit/builtin.hpp"
+#include "mechcheck/audit/steppers/builtin.hpp"
 #include "mechcheck/audit/adapters/odeint.hpp"
 #include "run_family.hpp"
 

@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "mechcheck/audit/black_box.hpp"
-#include "mechcheck/audit/drivers.hpp"
+#include "mechcheck/audit/steppers/black_box.hpp"
+#include "mechcheck/audit/drivers/drivers.hpp"
 
 namespace mechcheck::audit::arkode {
 

@@ -26,8 +26,8 @@
 #include <string>
 #include <vector>
 
-#include "mechcheck/audit/dynamics.hpp"
-#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/dynamics/dynamics.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
 
 namespace mechcheck::audit::bullet {
 

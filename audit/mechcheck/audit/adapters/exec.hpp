@@ -23,10 +23,10 @@
 #include <string_view>
 #include <vector>
 
-#include "mechcheck/audit/black_box.hpp"
-#include "mechcheck/audit/drivers.hpp"
-#include "mechcheck/audit/dynamics.hpp"
-#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/steppers/black_box.hpp"
+#include "mechcheck/audit/drivers/drivers.hpp"
+#include "mechcheck/audit/dynamics/dynamics.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
 
 namespace mechcheck::audit {
 

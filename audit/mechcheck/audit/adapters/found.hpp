@@ -8,9 +8,9 @@
 
 #include <vector>
 
-#include "mechcheck/audit/drivers.hpp"
-#include "mechcheck/audit/dynamics.hpp"
-#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/drivers/drivers.hpp"
+#include "mechcheck/audit/dynamics/dynamics.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
 #ifdef MECHCHECK_HAVE_GSL
 #include "mechcheck/audit/adapters/gsl.hpp"
 #endif

@@ -11,7 +11,7 @@
 /// are refused there (KDL's solvers of them take a chain). KDL's error codes become
 /// errors naming the solver and the code.
 
-#include "mechcheck/audit/dynamics.hpp"
+#include "mechcheck/audit/dynamics/dynamics.hpp"
 
 namespace mechcheck::audit {
 

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
 
 namespace mechcheck::audit::ode_engine {
 

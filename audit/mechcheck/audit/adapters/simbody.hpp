@@ -25,8 +25,8 @@
 #include <string>
 #include <vector>
 
-#include "mechcheck/audit/dynamics.hpp"
-#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/dynamics/dynamics.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
 
 namespace mechcheck::audit::simbody {
 

@@ -1,7 +1,7 @@
 #pragma once
 /// An engine scenario's exact observables from a model's certified reference (model.hpp),
 /// made when first asked for: the chains' Hamiltonians and the robots' Lagrangians
-/// (problems/scenarios.hpp).
+/// (engines/scenarios.hpp).
 
 #include <cstdio>
 #include <functional>
@@ -12,7 +12,7 @@
 
 #include <Eigen/Core>
 
-#include "mechcheck/audit/model.hpp"
+#include "mechcheck/audit/problems/model.hpp"
 #include "mechcheck/core.hpp"
 
 namespace mechcheck::audit::detail {

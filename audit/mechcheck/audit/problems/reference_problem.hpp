@@ -18,7 +18,7 @@
 #include "mechcheck/audit/problems/exact.hpp"
 #include "mechcheck/audit/problems/reference_cache.hpp"
 #include "mechcheck/audit/problems/reference_solution.hpp"
-#include "mechcheck/audit/tableau_file.hpp"
+#include "mechcheck/audit/tableaus/tableau_file.hpp"
 
 namespace mechcheck::audit {
 

@@ -4,7 +4,7 @@
 
 #include <memory>
 
-#include "mechcheck/audit/dynamics.hpp"
+#include "mechcheck/audit/dynamics/dynamics.hpp"
 #include "mechcheck/robots/robot.hpp"
 
 // DART's headers stay in the adapter's sources (they are found under a prefix of their own).

@@ -3,7 +3,7 @@
 // (simbody_dynamics.cpp) and its engine (simbody.cpp). Not a public header.
 
 #include "mechcheck/audit/adapters/detail/simbody_bridge.hpp"
-#include "mechcheck/audit/dynamics.hpp"
+#include "mechcheck/audit/dynamics/dynamics.hpp"
 #include "mechcheck/robots/robot.hpp"
 
 namespace mechcheck::audit::simbody {

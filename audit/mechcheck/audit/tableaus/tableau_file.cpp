@@ -1,4 +1,4 @@
-#include "mechcheck/audit/tableau_file.hpp"
+#include "mechcheck/audit/tableaus/tableau_file.hpp"
 
 #include <algorithm>
 #include <cmath>

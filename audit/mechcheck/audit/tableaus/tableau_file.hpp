@@ -45,9 +45,9 @@
 #include <utility>
 #include <vector>
 
-#include "mechcheck/audit/order_conditions.hpp"
+#include "mechcheck/audit/tableaus/order_conditions.hpp"
 #include "mechcheck/audit/result.hpp"
-#include "mechcheck/audit/stability.hpp"
+#include "mechcheck/audit/tableaus/stability.hpp"
 #include "mechcheck/core.hpp"
 
 namespace mechcheck::audit {

@@ -1,6 +1,6 @@
 // A dynamics library behind C calls (user_dynamics.hpp): statuses and sizes turned into
 // typed errors, the robot handed over as URDF text.
-#include "mechcheck/audit/user_dynamics.hpp"
+#include "mechcheck/audit/dynamics/user_dynamics.hpp"
 
 #include <array>
 

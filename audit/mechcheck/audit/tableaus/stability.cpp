@@ -1,4 +1,4 @@
-#include "mechcheck/audit/stability.hpp"
+#include "mechcheck/audit/tableaus/stability.hpp"
 
 #include "mechcheck/core.hpp"
 

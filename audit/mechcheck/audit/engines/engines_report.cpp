@@ -1,5 +1,5 @@
 // The engine audit's report: the console table, JSON and Markdown, written to a directory.
-#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "mechcheck/audit/audit.hpp"
-#include "mechcheck/audit/tableau_file.hpp"
+#include "mechcheck/audit/tableaus/tableau_file.hpp"
 #include "mechcheck/integrators/runge_kutta.hpp"
 
 namespace mechcheck::audit {

@@ -1,4 +1,4 @@
-#include "mechcheck/audit/drivers.hpp"
+#include "mechcheck/audit/drivers/drivers.hpp"
 #include "mechcheck/audit/problems/classic.hpp"
 
 #include <algorithm>

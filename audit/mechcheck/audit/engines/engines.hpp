@@ -34,7 +34,7 @@
 
 #include <Eigen/Core>
 
-#include "mechcheck/audit/problems/scenarios.hpp"
+#include "mechcheck/audit/engines/scenarios.hpp"
 #include "mechcheck/audit/result.hpp"
 #include "mechcheck/core.hpp"
 

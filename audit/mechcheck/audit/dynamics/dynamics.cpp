@@ -1,5 +1,5 @@
 // The equations of motion against the exact Lagrangian (dynamics.hpp).
-#include "mechcheck/audit/dynamics.hpp"
+#include "mechcheck/audit/dynamics/dynamics.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "mechcheck/audit/engines.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
 
 #include <algorithm>
 #include <chrono>

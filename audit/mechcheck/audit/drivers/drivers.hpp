@@ -36,7 +36,7 @@
 #include <string>
 #include <vector>
 
-#include "mechcheck/audit/black_box.hpp"
+#include "mechcheck/audit/steppers/black_box.hpp"
 #include "mechcheck/audit/result.hpp"
 
 namespace mechcheck::audit {

@@ -1,7 +1,7 @@
-// The engine scenarios and shapes (problems/scenarios.hpp): their parameters, initial states
+// The engine scenarios and shapes (engines/scenarios.hpp): their parameters, initial states
 // and exact references -- the free tops' elliptic solutions, the heavy top, the pendulums,
 // Kepler, the chains' certified references, the figure-eight choreography.
-#include "mechcheck/audit/problems/scenarios.hpp"
+#include "mechcheck/audit/engines/scenarios.hpp"
 
 #include <algorithm>
 #include <array>
@@ -11,7 +11,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 
-#include "mechcheck/audit/model.hpp"
+#include "mechcheck/audit/problems/model.hpp"
 #include "mechcheck/audit/problems/certified.hpp"
 #include "mechcheck/audit/problems/chains.hpp"
 #include "mechcheck/central/kepler.hpp"
@@ -317,7 +317,7 @@ model_setup setup_of(const std::string& name, const std::string& parameters, con
   model_setup m;
   m.name = "engine scenario " + name;
   m.description = m.name;
-  m.source = "audit/problems/scenarios.cpp";
+  m.source = "audit/engines/scenarios.cpp";
   m.parameters = parameters;
   for (double x : q0) m.q0.push_back(exact_text(x));
   for (double x : p0) m.p0.push_back(exact_text(x));

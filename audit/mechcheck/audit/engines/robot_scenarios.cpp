@@ -1,4 +1,4 @@
-// Robots as engine scenarios (problems/scenarios.hpp): a robot's Hamiltonian made a certified
+// Robots as engine scenarios (engines/scenarios.hpp): a robot's Hamiltonian made a certified
 // reference, and random robots drawn as scenarios.
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <Eigen/Cholesky>
 
 #include "mechcheck/audit/problems/certified.hpp"
-#include "mechcheck/audit/problems/scenarios.hpp"
+#include "mechcheck/audit/engines/scenarios.hpp"
 #include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/harness/generators.hpp"
 #include "mechcheck/robots/dynamics.hpp"
@@ -83,7 +83,7 @@ scenario robot_scenario(std::string name, const robots::robot& r, const Eigen::V
   model_setup m;
   m.name = "engine scenario " + s.name;
   m.description = m.name;
-  m.source = "audit/problems/robot_scenarios.cpp";
+  m.source = "audit/engines/robot_scenarios.cpp";
   m.parameters = to_urdf(r);
   for (Eigen::Index i = 0; i < n; ++i) m.q0.push_back(exact_text(q0(i)));
   m.t_end = exact_text(t_end);

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <rapidcheck.h>
 
-#include "mechcheck/audit/dynamics.hpp"
+#include "mechcheck/audit/dynamics/dynamics.hpp"
 #include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/audit/report.hpp"
 #include "mechcheck/harness/generators.hpp"

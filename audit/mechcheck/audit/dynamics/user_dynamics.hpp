@@ -24,7 +24,7 @@
 #include <utility>
 #include <vector>
 
-#include "mechcheck/audit/dynamics.hpp"
+#include "mechcheck/audit/dynamics/dynamics.hpp"
 #include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/core.hpp"
 

@@ -1,4 +1,4 @@
-// Free rigid bodies as engine scenarios (problems/scenarios.hpp): a body of any principal
+// Free rigid bodies as engine scenarios (engines/scenarios.hpp): a body of any principal
 // moments, its principal axes turned anywhere, spun about no axis of its own, against the
 // elliptic solution of Euler's equations; and random bodies drawn as scenarios.
 #include <algorithm>
@@ -8,7 +8,7 @@
 #include <Eigen/Geometry>
 
 #include "mechcheck/audit/problems/certified.hpp"
-#include "mechcheck/audit/problems/scenarios.hpp"
+#include "mechcheck/audit/engines/scenarios.hpp"
 #include "mechcheck/harness/generators.hpp"
 #include "mechcheck/reference/tops.hpp"
 
