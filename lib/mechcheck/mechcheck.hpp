@@ -11,3 +11,4 @@
 #include "mechcheck/rigid_body.hpp"
 #include "mechcheck/robots.hpp"
 #include "mechcheck/central.hpp"
+#include "mechcheck/contact.hpp"

@@ -5,3 +5,4 @@
 #include "mechcheck/reference/solids.hpp"
 #include "mechcheck/reference/tops.hpp"
 #include "mechcheck/reference/twist.hpp"
+#include "mechcheck/reference/contact.hpp"

@@ -228,6 +228,7 @@ int main(int argc, char** argv) {
   app.add_option("--seed", dynamics_seed, "the seed of the random robots and bodies (--dynamics, --engine-robots, --engine-bodies; default 1)");
   std::vector<std::string> engine_scenarios, scenario_names;
   for (const auto& s : audit::scenarios()) scenario_names.push_back(s.name);
+  for (const auto& s : audit::contact_scenarios()) scenario_names.push_back(s.name);
   int engine_robots = 0, engine_robot_links = 3;
   app.add_option("--engine-robots", engine_robots,
                  "with --engine: N random robots (chains and trees, revolute, prismatic and fixed joints, skew "
@@ -527,47 +528,83 @@ int main(int argc, char** argv) {
         return 1;
       }
     }
-    for (const auto& e : engines) {
-      audit::engine_options eopt;
-      eopt.scenarios = scenarios_named;
-      eopt.drawn = drawn;
-      eopt.long_run_steps = engine_long_run_steps;
-      eopt.timing = timing;
-      if (!quiet) eopt.progress = progress;
-      engine_audits.push_back(audit::audit_engine(e, eopt));
-    }
-    // The inertia of the shapes of every engine one of whose integrators was asked for.
-    std::vector<audit::shape_audit> shape_audits;
-    std::vector<audit::engine_shapes> shape_engines = audit::shapes_found();
-    for (const auto& t : exec_engines)
-      if (t.shapes) shape_engines.push_back(*t.shapes);
-    for (const auto& engine : shape_engines)
-      if (std::any_of(engines.begin(), engines.end(),
-                      [&](const audit::engine_integrator& e) { return e.name.rfind(engine.engine + "::", 0) == 0; }))
-        for (auto& a : audit::audit_shapes(engine)) shape_audits.push_back(std::move(a));
-    audit::print_engines(std::cout, engine_audits, shape_audits);
-    if (!report_files([&] {
-          std::vector<std::string> written = audit::write_engine_report(output, engine_audits, shape_audits);
-          // Each robot as URDF, for the engines' own loaders.
-          for (const auto& s : robots) {
-            const std::filesystem::path path = std::filesystem::path(output) / "robots" / (s.name + ".urdf");
-            std::filesystem::create_directories(path.parent_path());
-            std::ofstream file(path);
-            file << audit::to_urdf(s.robot->robot);
-            if (!file) throw error("cannot write " + path.string());
-            written.push_back(path.string());
-          }
-          return written;
-        }))
-      return 1;
-    std::cout << "audited " << engine_audits.size() << " engine integrators in " << static_cast<long>(elapsed() + 0.5)
-              << " s\n";
-    for (const auto& a : engine_audits) {
-      if (!a.claims_hold() && audit_tool::matches_any(require, a.integrator)) {
-        std::cerr << "mechcheck-audit: " << a.integrator << ": a declared claim is contradicted (see the table)\n";
-        raise(2);
+    // The contact scenarios (contact.hpp) are their own audit: named (--scenario 'contact_*'),
+    // never part of the default set.
+    std::vector<std::string> contact_named;
+    for (const auto& n : scenarios_named)
+      if (n.rfind("contact_", 0) == 0) contact_named.push_back(n);
+    std::erase_if(scenarios_named, [](const std::string& n) { return n.rfind("contact_", 0) == 0; });
+    std::vector<audit::contact_audit> contact_audits;
+    if (!contact_named.empty()) {
+      for (const auto& e : engines) {
+        audit::contact_options copt;
+        copt.scenarios = contact_named;
+        if (!quiet) copt.progress = progress;
+        contact_audits.push_back(audit::audit_contact(e, copt));
       }
-      require_measured_of(a.integrator, a.unmeasured());
+      audit::print_contact(std::cout, contact_audits);
+      if (!report_files([&] { return audit::write_contact_report(output, contact_audits); })) return 1;
+      for (const auto& a : contact_audits)
+        if (!a.claims_hold() && audit_tool::matches_any(require, a.integrator)) {
+          std::cerr << "mechcheck-audit: " << a.integrator << ": a declared contact claim is contradicted (see the table)\n";
+          raise(2);
+        }
+      if (scenarios_named.empty()) {
+        std::cout << "audited the contact of " << contact_audits.size() << " engine integrators in "
+                  << static_cast<long>(elapsed() + 0.5) << " s\n";
+        for (const auto& t : exec_engines)
+          if (t.failures() > 0) {
+            std::cerr << "mechcheck-audit: " << audit::command_text(child_command) << ": " << t.failures()
+                      << " children failed; the last: " << t.last_failure() << "\n";
+            raise(3);
+          }
+        if (steppers.empty() && tableau_files.empty() && driver_patterns.empty() && exec_targets.empty()) return status;
+      }
+    }
+    // The other scenarios, unless contact scenarios alone were named.
+    if (contact_named.empty() || !scenarios_named.empty()) {
+      for (const auto& e : engines) {
+        audit::engine_options eopt;
+        eopt.scenarios = scenarios_named;
+        eopt.drawn = drawn;
+        eopt.long_run_steps = engine_long_run_steps;
+        eopt.timing = timing;
+        if (!quiet) eopt.progress = progress;
+        engine_audits.push_back(audit::audit_engine(e, eopt));
+      }
+      // The inertia of the shapes of every engine one of whose integrators was asked for.
+      std::vector<audit::shape_audit> shape_audits;
+      std::vector<audit::engine_shapes> shape_engines = audit::shapes_found();
+      for (const auto& t : exec_engines)
+        if (t.shapes) shape_engines.push_back(*t.shapes);
+      for (const auto& engine : shape_engines)
+        if (std::any_of(engines.begin(), engines.end(),
+                        [&](const audit::engine_integrator& e) { return e.name.rfind(engine.engine + "::", 0) == 0; }))
+          for (auto& a : audit::audit_shapes(engine)) shape_audits.push_back(std::move(a));
+      audit::print_engines(std::cout, engine_audits, shape_audits);
+      if (!report_files([&] {
+            std::vector<std::string> written = audit::write_engine_report(output, engine_audits, shape_audits);
+            // Each robot as URDF, for the engines' own loaders.
+            for (const auto& s : robots) {
+              const std::filesystem::path path = std::filesystem::path(output) / "robots" / (s.name + ".urdf");
+              std::filesystem::create_directories(path.parent_path());
+              std::ofstream file(path);
+              file << audit::to_urdf(s.robot->robot);
+              if (!file) throw error("cannot write " + path.string());
+              written.push_back(path.string());
+            }
+            return written;
+          }))
+        return 1;
+      std::cout << "audited " << engine_audits.size() << " engine integrators in " << static_cast<long>(elapsed() + 0.5)
+                << " s\n";
+      for (const auto& a : engine_audits) {
+        if (!a.claims_hold() && audit_tool::matches_any(require, a.integrator)) {
+          std::cerr << "mechcheck-audit: " << a.integrator << ": a declared claim is contradicted (see the table)\n";
+          raise(2);
+        }
+        require_measured_of(a.integrator, a.unmeasured());
+      }
     }
     if (steppers.empty() && tableau_files.empty() && driver_patterns.empty() && exec_targets.empty()) {
       for (const auto& t : exec_engines)

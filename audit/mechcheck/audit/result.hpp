@@ -94,7 +94,10 @@ struct verdict {
     not_resolvable,
     reading,
     exceeds,
-    to_precision_given
+    to_precision_given,
+    /// A departure from the exact answer the documentation does not state (the contact
+    /// audit: a creep where a friction is documented as Coulomb's), measured with its size.
+    measured
   };
   std::string claim;
   std::string declared;
@@ -106,7 +109,7 @@ struct verdict {
 };
 
 /// Words for an outcome: "confirmed", "CONTRADICTED", "not resolvable", "reading",
-/// "exceeds", "to the precision given", "not declared", "not measured".
+/// "exceeds", "to the precision given", "not declared", "not measured", "measured".
 inline const char* outcome_text(verdict::outcome o) {
   switch (o) {
     case verdict::outcome::confirmed: return "confirmed";
@@ -117,6 +120,7 @@ inline const char* outcome_text(verdict::outcome o) {
     case verdict::outcome::reading: return "reading";
     case verdict::outcome::exceeds: return "exceeds";
     case verdict::outcome::to_precision_given: return "to the precision given";
+    case verdict::outcome::measured: return "measured";
   }
   return "?";
 }

@@ -397,3 +397,37 @@ rc::Gen<robot_case> robot_cases(int max_links) {
 }
 
 }  // namespace mechcheck::generators
+
+namespace mechcheck::generators {
+
+void showValue(const contact_case& c, std::ostream& os) {
+  os << "contact case: theta = " << c.theta << ", psi = " << c.psi << ", mu = " << c.mu << ", mass = " << c.mass
+     << ", size = " << c.size << ", aspects = (" << c.aspect_b << ", " << c.aspect_c << "), e = " << c.e
+     << ", speed = " << c.speed << ", slope = " << c.slope << ", height = " << c.height;
+}
+
+rc::Gen<contact_case> contact_cases() {
+  return rc::gen::exec([] {
+    contact_case c;
+    c.theta = *dyadic_towards_zero(3.15);
+    c.psi = *dyadic_towards_zero(3.15);
+    c.mu = *dyadic(0.05, 1.5);
+    c.mass = std::ldexp(*dyadic(1, 1.99609375), *uniform_int(-6, 7));
+    c.size = std::ldexp(*dyadic(1, 1.99609375), *uniform_int(-3, 2));
+    c.aspect_b = *dyadic(0.5, 2);
+    c.aspect_c = *dyadic(0.5, 2);
+    c.e = *dyadic(0, 1);
+    c.speed = *dyadic(0.25, 4);
+    // The slope around the friction angle: below, within 1/64 rad, or above it.
+    const double friction_angle = std::atan(c.mu);
+    const int side = *uniform_int(0, 2);
+    const double offset = side == 1 ? *dyadic_towards_zero(1.0 / 64) : *dyadic(1.0 / 64, 0.5);
+    double slope = side == 0 ? friction_angle - offset : friction_angle + offset;
+    slope = std::floor(std::clamp(slope, 0.0, 1.3) * 256) / 256;  // dyadic
+    c.slope = slope;
+    c.height = *dyadic(0.125, 2);
+    return c;
+  });
+}
+
+}  // namespace mechcheck::generators

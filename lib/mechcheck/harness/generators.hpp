@@ -326,6 +326,27 @@ void showValue(const robot_case& c, std::ostream& os);
 
 rc::Gen<robot_case> robot_cases(int max_links = 8);
 
+/// A case of bodies in contact (reference/contact.hpp; the engines' contact scenarios): every
+/// number dyadic, so that a case is exact in every tier and in an engine's input file.
+///   theta, psi: the velocity's direction and the body's yaw about z, in [-3.15, 3.15] rad;
+///   mu: the friction coefficient in [0.05, 1.5];
+///   mass: 2^-6 to 2^7 times a dyadic in [1, 2) (four decades);
+///   size: a half-edge or radius in 2^-3 to 2^3 times a dyadic in [1, 2) (two decades);
+///   aspect: the box's other half-edges over `size`, in [1/2, 2];
+///   e: the restitution in [0, 1];
+///   speed: in [1/4, 4];
+///   slope: the ground's angle relative to the friction angle atan(mu): below it, near it
+///     (within 1/64 rad) or above it, never steeper than 1.3 rad;
+///   height: a drop in [1/8, 2].
+struct contact_case {
+  double theta = 0, psi = 0, mu = 0.5, mass = 1, size = 0.1, aspect_b = 1, aspect_c = 1, e = 0.5, speed = 1,
+         slope = 0, height = 1;
+};
+
+void showValue(const contact_case& c, std::ostream& os);
+
+rc::Gen<contact_case> contact_cases();
+
 /// A direction: three dyadic components in [-2, 2], not all zero.
 rc::Gen<std::vector<double>> directions();
 

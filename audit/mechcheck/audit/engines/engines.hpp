@@ -138,6 +138,9 @@ struct engine_integrator {
   /// The adapter builds multibody scenarios (chains, the loop, free bodies); without it
   /// they are refused before start is called.
   bool multibody = false;
+  /// The adapter builds contact scenarios (contact.hpp), and what the engine declares of its
+  /// contact; without it they are refused before start is called.
+  std::optional<contact_claims> contact;
   /// The adapter builds robot scenarios (body_structure::robot: trees of revolute and
   /// prismatic joints from a robots::robot, read back in its joint coordinates); without it
   /// they are refused before start is called.

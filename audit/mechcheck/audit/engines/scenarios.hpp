@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include "mechcheck/audit/engines/contact.hpp"
 #include "mechcheck/core.hpp"
 #include "mechcheck/robots/robot.hpp"
 
@@ -36,6 +37,7 @@ enum class scenario_kind {
   three_body,          ///< three free bodies under their mutual gravitation
   robot,               ///< a robot (robots/robot.hpp), given or drawn: its joint coordinates and rates
   free_body,           ///< a free asymmetric body, given or drawn, its principal axes anywhere
+  contact,             ///< bodies on the ground or meeting each other (contact.hpp)
 };
 
 /// How a scenario's bodies are put together.
@@ -44,6 +46,7 @@ enum class body_structure {
   chain,        ///< `links`, each hinged about world y to the one before (link 0 to the world)
   free_bodies,  ///< `links`, free, under their mutual gravitation
   robot,        ///< `robot`: a kinematic tree in its joint coordinates (robot_start)
+  contact,      ///< `contact`: bodies on the ground under Coulomb friction and restitution
 };
 
 /// One body of a multibody scenario: mass, principal moments about its centre of mass
@@ -106,6 +109,7 @@ struct scenario {
   std::optional<loop_closure> loop;  ///< a chain closed on the ground
   double gravitation = 0;           ///< G between free bodies: force G m_i m_j / r^2
   std::shared_ptr<const robot_start> robot;  ///< body_structure::robot
+  std::shared_ptr<const contact_setup> contact;  ///< body_structure::contact (contact.hpp)
   joint_kind joint = joint_kind::free;
   double mass = 1;
   Eigen::Vector3d inertia{1, 1, 1};

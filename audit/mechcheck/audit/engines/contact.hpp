@@ -1,0 +1,179 @@
+#pragma once
+/// Contact under audit: bodies on the ground and meeting each other, with Coulomb friction
+/// and Newton restitution, held to the exact answers of reference/contact.hpp -- a box
+/// sliding in any direction, a box sticking on a slope below its friction angle and one
+/// sliding above it, a ball and a cylinder rolling down a slope, a billiard ball turning
+/// from sliding to rolling, a ball bouncing, two balls colliding head-on and obliquely, a
+/// stack of boxes and a box at rest.
+///
+/// Each is a `scenario` (scenarios.hpp) whose `contact` holds the setup in engine-neutral
+/// terms; an engine adapter builds it in its own terms (its ground plane, shapes, friction
+/// and restitution with its combine rules set so that every pair has the scenario's mu and
+/// e, its contact settings named in the integrator's origin), steps it at a fixed h and reads
+/// every body's frame back (body_reading::links). The contact audit (audit_contact) runs it
+/// at h = 1/60 (the default step of Bullet, Rapier, Jolt, Havok and cannon-es) and at 1/120
+/// to 1/960, and measures:
+///   - per scenario the observables its exact answer fixes (the stopping distance and time,
+///     the path's deviation from its line, the creep on a slope below the friction angle,
+///     the acceleration down a slope, the no-slip residual v - omega r, the billiard's
+///     transition time and final speed, each apex against e^(2k) h, the velocities after a
+///     collision and the momentum, the drift of bodies at rest), each relative to its scale;
+///   - their error against h: a trend fitted where it converges (order study), the limit's
+///     size where it does not (an anisotropy, a creep, a penetration: a property of the
+///     engine's contact model, reported as such);
+///   - the stopping distance against the direction of motion theta and the body's yaw psi
+///     (the isotropy of the friction: Coulomb's is, a pyramid's is not);
+///   - energy gained at a contact event (an apex above the one before; a body at rest).
+/// The claims are the engines' own words (contact_claims): a friction documented as an
+/// isotropic (elliptic) cone, a pyramid or a box; a restitution documented as Newton's; a
+/// soft contact by design. Verdicts (judge_contact): a documented approximation measured is
+/// a *reading* with its size; an undocumented departure is *measured*; an energy gained at
+/// a bounce with e <= 1, a body at rest gaining energy, or a direction-dependent stopping
+/// distance under a cone documented as isotropic is *CONTRADICTED*; agreement within the
+/// study's resolution is *confirmed*.
+
+#include <array>
+#include <functional>
+#include <ostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "mechcheck/audit/result.hpp"
+
+namespace mechcheck::audit {
+
+struct scenario;
+struct engine_integrator;
+
+/// A body of a contact scenario: a uniform solid (its inertia the solid's) or, where
+/// `inertia` is given, a body of that shape's surface and those moments (a hollow ball).
+enum class contact_shape { box, sphere, cylinder };
+const char* contact_shape_name(contact_shape s);
+
+struct contact_body {
+  contact_shape shape = contact_shape::box;
+  /// box: half-edges along the body axes; sphere: (r, 0, 0); cylinder: (r, half-length, 0),
+  /// its axis along the body's y (it rolls about y).
+  Eigen::Vector3d size{0.1, 0.1, 0.05};
+  double mass = 1;
+  /// Principal moments about the centre along the body axes.
+  Eigen::Vector3d inertia{1, 1, 1};
+  Eigen::Matrix3d rotation0 = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d position0{0, 0, 0}, velocity0{0, 0, 0}, omega0{0, 0, 0};
+};
+
+/// The ground and the bodies. The ground (where there is one) is the plane through the
+/// origin turned by `slope` about world y: its normal n = (sin a, 0, cos a), its fall line
+/// d = (cos a, 0, -sin a) (down the slope is +x). Every contact, body on ground and body on
+/// body, has Coulomb's coefficient `mu` (static = kinetic) and Newton's restitution `e`.
+struct contact_setup {
+  bool ground = true;
+  double slope = 0;
+  double mu = 0.5;
+  double restitution = 0;
+  std::vector<contact_body> bodies;
+  Eigen::Vector3d normal() const;
+  Eigen::Vector3d fall_line() const;
+};
+
+/// What an engine's documentation declares of its contact (each nothing where it is
+/// silent; `words` quotes it).
+struct contact_claims {
+  /// The friction cone: "elliptic" (isotropic, as Coulomb's), "pyramidal" (a polyhedral
+  /// approximation: the friction limit depends on the direction), "box" (a fixed force
+  /// limit per direction, not scaled by the normal force).
+  std::optional<std::string> friction_cone;
+  /// A restitution coefficient documented as Newton's (the normal velocity reversed times e).
+  std::optional<bool> newton_restitution;
+  /// A soft contact by design (penetration, and slow motion under static loads).
+  std::optional<bool> soft;
+  std::string words;
+};
+
+/// One measurement of a contact scenario at one step: its value, the exact one, their
+/// difference relative to the scale (empty where the exact answer fixes nothing).
+struct contact_measure {
+  std::string name;   ///< "stopping distance", "apex 1", "creep", ...
+  std::string unit;   ///< "m", "s", "m/s", "m/s^2", "J", "" (a ratio)
+  double value = 0;
+  std::optional<double> exact;
+  double scale = 1;   ///< what the error is relative to
+  double error() const { return exact ? (value - *exact) / scale : 0.0; }
+};
+
+/// A scenario's measures at each h of the study (coarsest first), and what the trend says.
+struct contact_run {
+  double h = 0;
+  std::vector<contact_measure> measures;
+  std::string failure;  ///< the run failed or diverged (its step and the engine's words)
+  double energy_gain = 0;  ///< largest rise of the mechanical energy over a step, relative to its scale
+};
+
+struct contact_trend {
+  std::string measure;
+  /// The fitted exponent of |error| against h over the study (where the errors fall), or
+  /// nothing: the error does not converge as h -> 0 (its limit is `limit`).
+  std::optional<double> order;
+  double limit = 0;          ///< the error at the finest h
+  double at_default = 0;     ///< the error at h = 1/60
+  std::string words;         ///< "first order (0.98)", "does not converge: 0.31 at every h"
+};
+
+/// The stopping distance against direction: theta and psi in degrees, the distance over
+/// the exact one.
+struct isotropy_point {
+  double theta = 0, psi = 0, ratio = 1;
+};
+
+struct contact_scenario_audit {
+  std::string scenario, description;
+  std::string refused;
+  std::vector<contact_run> runs;          ///< h = 1/60, 1/120, ..., 1/960
+  std::vector<contact_trend> trends;
+  std::vector<isotropy_point> isotropy;   ///< contact_slide: the sweep at h = 1/60
+  double anisotropy = 0;                  ///< (max - min) / exact of the sweep
+  /// Apex heights (contact_bounce) at h = 1/60: (k, measured, e^(2k) h).
+  std::vector<std::array<double, 3>> apexes;
+};
+
+struct contact_audit {
+  std::string integrator, origin;
+  contact_claims declared;
+  std::vector<contact_scenario_audit> scenarios;
+  /// The verdicts: "friction cone" (isotropy), "static friction" (creep), "restitution"
+  /// (bounces and collisions), "energy" (no energy gained at contact events or at rest),
+  /// "agreement" (the exact answers at the finest h).
+  std::vector<verdict> verdicts;
+  bool claims_hold() const;
+};
+
+struct contact_options {
+  std::vector<std::string> scenarios;  ///< names; empty: all
+  double h0 = 1.0 / 60;
+  int halvings = 4;
+  std::function<void(const std::string&)> progress;
+};
+
+/// The contact scenarios (scenarios.hpp's `scenario`, kind contact), each with its exact
+/// answers; their names begin with "contact_".
+std::vector<scenario> contact_scenarios();
+
+/// contact_slide with the box sent in direction theta (rad, from x) and yawed by psi about z.
+scenario with_direction(const scenario& slide, double theta, double psi);
+
+/// The contact audit of an engine integrator (integrators without contact claims are
+/// refused every scenario by name).
+contact_audit audit_contact(const engine_integrator& in, const contact_options& opt = {});
+
+void print_contact(std::ostream& out, const std::vector<contact_audit>& audits);
+std::string contact_to_json(const std::vector<contact_audit>& audits);
+std::string contact_to_markdown(const std::vector<contact_audit>& audits);
+/// Writes contact.json, contact.md and the SVG plots (the stopping distance against theta
+/// for each integrator, the apex heights against e^(2k) h) into `directory`.
+std::vector<std::string> write_contact_report(const std::string& directory, const std::vector<contact_audit>& audits);
+
+}  // namespace mechcheck::audit

@@ -1,0 +1,497 @@
+// The contact audit (contact.hpp): each contact scenario run at h = 1/60 .. 1/960, its
+// measures against the exact answers of reference/contact.hpp, the trend of their errors,
+// the isotropy sweep, and the verdicts on what the engine declares of its contact.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Geometry>
+
+#include "mechcheck/audit/engines/contact.hpp"
+#include "mechcheck/audit/engines/engines.hpp"
+#include "mechcheck/reference/contact.hpp"
+
+namespace mechcheck::audit {
+
+namespace {
+/// A run's frames: frames[0] at t = 0, frames[k] after step k.
+struct trajectory {
+  double h = 0;
+  std::vector<std::vector<body_frame>> frames;
+  std::string failure;
+};
+
+std::vector<body_frame> bodies_of(const body_reading& r) {
+  if (!r.links.empty()) return r.links;
+  return {static_cast<const body_frame&>(r)};
+}
+
+trajectory run_scenario(const engine_integrator& in, const scenario& s, double h) {
+  trajectory t;
+  t.h = h;
+  const long n = std::lround(s.t_end / h);
+  std::unique_ptr<engine_run> e = in.start(s);
+  t.frames.push_back(bodies_of(e->read()));
+  try {
+    e->trajectory(h, n, [&](long, const body_reading& r) { t.frames.push_back(bodies_of(r)); }, false);
+  } catch (const scenario_refused&) {
+    throw;
+  } catch (const std::exception& ex) {
+    t.failure = "step " + std::to_string(t.frames.size()) + ": " + ex.what();
+  }
+  for (const auto& f : t.frames)
+    if (f.size() != s.contact->bodies.size())
+      throw error(in.name + " on " + s.name + ": a reading of " + std::to_string(f.size()) + " bodies, the scenario has " +
+                  std::to_string(s.contact->bodies.size()));
+  return t;
+}
+
+/// Mechanical energy of the bodies: translation, rotation (about the centre, body axes) and
+/// gravity's potential m g z.
+double energy(const scenario& s, const std::vector<body_frame>& f) {
+  double e = 0;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const contact_body& b = s.contact->bodies[i];
+    const Eigen::Vector3d w = f[i].rotation.transpose() * f[i].omega;
+    e += b.mass * f[i].velocity.squaredNorm() / 2 + w.dot(b.inertia.cwiseProduct(w)) / 2 + b.mass * s.gravity * f[i].position(2);
+  }
+  return e;
+}
+
+contact_measure measure(std::string name, std::string unit, double value, std::optional<double> exact, double scale) {
+  contact_measure m;
+  m.name = std::move(name);
+  m.unit = std::move(unit);
+  m.value = value;
+  m.exact = exact;
+  m.scale = scale > 0 ? scale : 1;
+  return m;
+}
+
+/// The first time (interpolated between steps) at which x(t) falls to `level`, or nothing.
+std::optional<double> first_below(const std::vector<double>& x, double h, double level) {
+  for (std::size_t k = 1; k < x.size(); ++k)
+    if (x[k] <= level) {
+      const double a = x[k - 1], b = x[k];
+      const double f = a > b ? (a - level) / (a - b) : 1.0;
+      return (double(k - 1) + std::clamp(f, 0.0, 1.0)) * h;
+    }
+  return std::nullopt;
+}
+
+/// The measures of one run (see contact.hpp), by scenario.
+contact_run measures_of(const scenario& s, const trajectory& t) {
+  const contact_setup& c = *s.contact;
+  const double g = s.gravity, h = t.h;
+  contact_run r;
+  r.h = h;
+  r.failure = t.failure;
+  const std::vector<body_frame>& first = t.frames.front();
+  const auto& fr = t.frames;
+  const std::size_t last = fr.size() - 1;
+  const contact_body& b0 = c.bodies.front();
+  // Energy: the largest rise over a step, relative to the energy the scenario exchanges.
+  double e_scale = 0;
+  for (const contact_body& b : c.bodies)
+    e_scale += b.mass * (b.velocity0.squaredNorm() / 2 + g * std::max(0.05, std::abs(b.position0(2))));
+  for (std::size_t k = 1; k < fr.size(); ++k)
+    r.energy_gain = std::max(r.energy_gain, (energy(s, fr[k]) - energy(s, fr[k - 1])) / e_scale);
+  const double t_run = double(last) * h;
+  const auto& name = s.name;
+  if (name == "contact_slide") {
+    const Eigen::Vector3d v0 = b0.velocity0, u = v0.normalized();
+    const reference::sliding_on_level<double> exact(v0, c.mu, g);
+    const Eigen::Vector3d d = fr[last][0].position - first[0].position;
+    std::vector<double> speed;
+    double deviation = 0;
+    for (const auto& f : fr) {
+      speed.push_back(Eigen::Vector3d(f[0].velocity(0), f[0].velocity(1), 0).norm());
+      const Eigen::Vector3d x = f[0].position - first[0].position;
+      deviation = std::max(deviation, (x - x.dot(u) * u).head<2>().norm());
+    }
+    const double stop = exact.stop_distance();
+    r.measures.push_back(measure("stopping distance", "m", d.head<2>().norm(), stop, stop));
+    if (const auto ts = first_below(speed, h, 0.01 * v0.norm()))
+      r.measures.push_back(measure("stopping time (speed 1% of v0)", "s", *ts, 0.99 * exact.stop_time(), exact.stop_time()));
+    r.measures.push_back(measure("deviation from the line", "m", deviation, 0.0, stop));
+    // At rest from t_stop + 0.1 s: the drift to the end.
+    double drift = 0;
+    for (std::size_t k = 0; k < fr.size(); ++k)
+      if (double(k) * h >= exact.stop_time() + 0.1) drift = std::max(drift, (fr[k][0].position - fr[last][0].position).norm());
+    r.measures.push_back(measure("drift at rest", "m", drift, 0.0, stop));
+    const Eigen::Matrix3d turn = first[0].rotation.transpose() * fr[last][0].rotation;
+    r.measures.push_back(measure("yaw turned", "rad", std::atan2(turn(1, 0), turn(0, 0)), 0.0, 1.0));
+  } else if (name == "contact_slope_stick") {
+    const Eigen::Vector3d dl = c.fall_line();
+    const double creep = (fr[last][0].position - first[0].position).dot(dl);
+    const double half = (fr[last / 2][0].position - first[0].position).dot(dl);
+    r.measures.push_back(measure("creep down the slope", "m", creep, 0.0, b0.size(0)));
+    r.measures.push_back(measure("creep rate (second half)", "m/s", (creep - half) / (t_run / 2), 0.0, b0.size(0)));
+  } else if (name == "contact_slope_slide") {
+    const reference::sliding_on_slope<double> exact(c.slope, c.mu, g);
+    const double s_end = (fr[last][0].position - first[0].position).dot(c.fall_line());
+    r.measures.push_back(measure("distance down the slope", "m", s_end, exact.position(t_run), exact.position(t_run)));
+  } else if (name == "contact_roll" || name == "contact_roll_cylinder") {
+    const double radius = b0.size(0), k = b0.inertia(1) / (b0.mass * radius * radius);
+    const reference::rolling_on_slope<double> exact(c.slope, c.mu, g, k, radius);
+    const Eigen::Vector3d n = c.normal();
+    const double s_end = (fr[last][0].position - first[0].position).dot(c.fall_line());
+    r.measures.push_back(measure("distance down the slope", "m", s_end, exact.distance(t_run), exact.distance(t_run)));
+    double slip = 0;
+    for (std::size_t k2 = 1; k2 < fr.size(); ++k2) {
+      const body_frame& f = fr[k2][0];
+      slip = std::max(slip, (f.velocity + f.omega.cross(-radius * n)).norm());
+    }
+    r.measures.push_back(measure("slip |v - omega r|, largest", "m/s", slip, 0.0, exact.velocity(t_run)));
+  } else if (name == "contact_billiard") {
+    const double radius = b0.size(0), k = b0.inertia(0) / (b0.mass * radius * radius);
+    const reference::billiard<double> exact(b0.velocity0, b0.omega0, radius, k, c.mu, g);
+    std::vector<double> slip;
+    for (const auto& f : fr) slip.push_back(exact.slip(f[0].velocity, f[0].omega).head<2>().norm());
+    const double v0 = b0.velocity0.norm();
+    if (const auto tr = first_below(slip, h, 1e-3 * v0))
+      r.measures.push_back(measure("rolling from", "s", *tr, exact.roll_time(), exact.roll_time()));
+    else
+      r.measures.push_back(measure("rolling from (never: slips to the end)", "s", t_run, exact.roll_time(), exact.roll_time()));
+    r.measures.push_back(measure("final speed", "m/s", fr[last][0].velocity.head<2>().norm(), exact.velocity(t_run).norm(), v0));
+    r.measures.push_back(measure("distance", "m", (fr[last][0].position - first[0].position).head<2>().norm(),
+                                 exact.displacement(t_run).norm(), exact.displacement(t_run).norm()));
+  } else if (name == "contact_bounce") {
+    const double radius = b0.size(0), h0 = b0.position0(2) - radius;
+    const reference::bouncing_ball<double> exact(h0, c.restitution, g);
+    // Apexes: local maxima of the lowest point's height after the first contact.
+    std::vector<double> z;
+    for (const auto& f : fr) z.push_back(f[0].position(2) - radius);
+    int k = 0;
+    bool touched = false;
+    for (std::size_t i = 1; i + 1 < z.size() && k < 3; ++i) {
+      if (z[i] < 0.5 * h0 * std::pow(c.restitution, 2 * k) * 0.1 + 1e-9 && !touched && double(i) * h > exact.fall_time() * 0.5)
+        touched = true;
+      if (touched && z[i] > z[i - 1] && z[i] >= z[i + 1] && z[i] > 1e-4) {
+        ++k;
+        r.measures.push_back(measure("apex " + std::to_string(k), "m", z[i], exact.apex(k), h0));
+        touched = false;
+      }
+    }
+    r.measures.push_back(measure("height at rest (end)", "m", z.back(), 0.0, radius));
+  } else if (name == "contact_collision" || name == "contact_collision_oblique") {
+    const contact_body& b1 = c.bodies[1];
+    const Eigen::Vector3d x1 = b0.position0, x2 = b1.position0, v1 = b0.velocity0, v2 = b1.velocity0;
+    // The contact normal where they meet: centres 2r apart along the relative motion.
+    const Eigen::Vector3d rel = x2 - x1, w = v1 - v2;
+    const double a = w.squaredNorm(), bb = -2 * rel.dot(w), cc = rel.squaredNorm() - std::pow(b0.size(0) + b1.size(0), 2);
+    const double tc = (-bb - std::sqrt(bb * bb - 4 * a * cc)) / (2 * a);
+    const Eigen::Vector3d n = (rel - tc * w).normalized();
+    const auto out = reference::collide(b0.mass, v1, b1.mass, v2, n, c.restitution);
+    const Eigen::Vector3d p0 = b0.mass * v1 + b1.mass * v2;
+    const Eigen::Vector3d p1 = b0.mass * fr[last][0].velocity + b1.mass * fr[last][1].velocity;
+    const double vs = v1.norm() + v2.norm();
+    r.measures.push_back(measure("body 1's velocity after, error", "m/s", (fr[last][0].velocity - out.v1).norm(), 0.0, vs));
+    r.measures.push_back(measure("body 2's velocity after, error", "m/s", (fr[last][1].velocity - out.v2).norm(), 0.0, vs));
+    r.measures.push_back(measure("momentum change", "kg m/s", (p1 - p0).norm(), 0.0, b0.mass * v1.norm() + b1.mass * v2.norm()));
+    const double k0 = b0.mass * v1.squaredNorm() / 2 + b1.mass * v2.squaredNorm() / 2;
+    const double k1 = b0.mass * fr[last][0].velocity.squaredNorm() / 2 + b1.mass * fr[last][1].velocity.squaredNorm() / 2;
+    r.measures.push_back(measure("kinetic energy lost", "J", k0 - k1, out.energy_lost, k0));
+  } else if (name == "contact_rest" || name == "contact_stack") {
+    double drift = 0, gain = 0;
+    const double e0 = energy(s, first);
+    for (const auto& f : fr) {
+      for (std::size_t i = 0; i < f.size(); ++i) drift = std::max(drift, (f[i].position - first[i].position).norm());
+      gain = std::max(gain, energy(s, f) - e0);
+    }
+    r.measures.push_back(measure("drift, largest", "m", drift, 0.0, b0.size(0)));
+    double weight = 0;
+    for (const contact_body& b : c.bodies) weight += b.mass * g * b0.size(2);
+    r.measures.push_back(measure("energy gained, largest", "J", gain, 0.0, weight));
+  }
+  return r;
+}
+
+std::string fmt(double x, const char* f = "%.3g") {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, f, x);
+  return buf;
+}
+
+/// The trend of each measure's error over the study's h.
+std::vector<contact_trend> trends_of(const std::vector<contact_run>& runs) {
+  std::vector<contact_trend> out;
+  if (runs.empty()) return out;
+  for (std::size_t m = 0; m < runs.front().measures.size(); ++m) {
+    const std::string& name = runs.front().measures[m].name;
+    std::vector<double> lh, le, errors;
+    for (const contact_run& r : runs) {
+      const auto it = std::find_if(r.measures.begin(), r.measures.end(), [&](const contact_measure& x) { return x.name == name; });
+      if (it == r.measures.end() || !it->exact || !r.failure.empty()) continue;
+      const double e = std::abs(it->error());
+      errors.push_back(e);
+      if (e > 0) {
+        lh.push_back(std::log(r.h));
+        le.push_back(std::log(e));
+      }
+    }
+    if (errors.empty()) continue;
+    contact_trend t;
+    t.measure = name;
+    t.at_default = errors.front();
+    t.limit = errors.back();
+    if (lh.size() >= 3) {
+      double mx = 0, my = 0;
+      for (std::size_t i = 0; i < lh.size(); ++i) mx += lh[i], my += le[i];
+      mx /= double(lh.size());
+      my /= double(lh.size());
+      double sxy = 0, sxx = 0;
+      for (std::size_t i = 0; i < lh.size(); ++i) sxy += (lh[i] - mx) * (le[i] - my), sxx += (lh[i] - mx) * (lh[i] - mx);
+      const double slope = sxy / sxx;
+      // Converging: the error falls as h^p, p >= 1/2, by at least half over the study.
+      if (slope >= 0.5 && errors.back() <= errors.front() / 2) t.order = slope;
+    }
+    if (errors.back() == 0 && errors.front() == 0)
+      t.words = "exact at every h";
+    else if (t.order)
+      t.words = "converges, order " + fmt(*t.order, "%.2f") + " (" + fmt(errors.front()) + " at h = 1/60, " +
+                fmt(errors.back()) + " at the finest)";
+    else
+      t.words = "does not converge: " + fmt(errors.back()) + " at the finest h (" + fmt(errors.front()) + " at 1/60)";
+    out.push_back(t);
+  }
+  return out;
+}
+
+const contact_measure* find(const contact_run& r, const std::string& prefix) {
+  for (const auto& m : r.measures)
+    if (m.name.rfind(prefix, 0) == 0) return &m;
+  return nullptr;
+}
+
+const contact_scenario_audit* scenario_named(const contact_audit& a, const std::string& name) {
+  for (const auto& s : a.scenarios)
+    if (s.scenario == name && s.refused.empty() && !s.runs.empty()) return &s;
+  return nullptr;
+}
+
+/// The energy a run may gain by rounding alone: 64 u a step as a random walk (the engines'
+/// long runs use the same budget), relative to the scenario's energy scale.
+double rounding_gain(double u, double steps) { return 64 * u * std::sqrt(std::max(steps, 1.0)); }
+}  // namespace
+
+bool contact_audit::claims_hold() const {
+  return std::none_of(verdicts.begin(), verdicts.end(),
+                      [](const verdict& v) { return v.result == verdict::outcome::contradicted; });
+}
+
+namespace {
+using outcome = verdict::outcome;
+
+/// The verdicts (contact.hpp): thresholds derived from what each study resolves.
+std::vector<verdict> judge_contact(const contact_audit& a, double u) {
+  std::vector<verdict> out;
+  const contact_claims& c = a.declared;
+  {  // The friction cone: the stopping distance against direction.
+    verdict v;
+    v.claim = "friction cone";
+    v.declared = c.friction_cone.value_or("-");
+    const contact_scenario_audit* s = scenario_named(a, "contact_slide");
+    // The sweep's runs differ only by the rotation of their inputs: an isotropic friction
+    // gives them one distance up to rounding. 1e-3 is a thousand times single precision's
+    // rounding of the distance and far below a pyramid's spread (up to 1 - 1/sqrt 2).
+    const double resolution = 1e-3;
+    if (!s || s->isotropy.empty()) {
+      v.measured = "-";
+      v.result = c.friction_cone ? outcome::not_measured : outcome::not_declared;
+    } else {
+      const bool isotropic = s->anisotropy <= resolution;
+      v.measured = isotropic ? "isotropic (spread " + fmt(s->anisotropy) + ")" : "anisotropic (spread " + fmt(s->anisotropy) + ")";
+      v.evidence = "the stopping distance over theta 0..90 degrees and psi 0, 30 at h = 1/60 spreads by " + fmt(s->anisotropy) +
+                   " of v0^2/(2 mu g) (resolution " + fmt(resolution) + ")";
+      if (!c.friction_cone) v.result = outcome::not_declared;
+      else if (*c.friction_cone == "elliptic") v.result = isotropic ? outcome::confirmed : outcome::contradicted;
+      else v.result = isotropic ? outcome::exceeds : outcome::reading;
+      if (c.friction_cone && *c.friction_cone != "elliptic" && !isotropic)
+        v.readings.push_back({"a " + *c.friction_cone + " friction limit, as documented", v.measured, true});
+    }
+    out.push_back(v);
+  }
+  {  // Static friction: no creep below the friction angle.
+    verdict v;
+    v.claim = "static friction";
+    v.declared = c.soft.value_or(false) ? "soft contact" : "Coulomb";
+    const contact_scenario_audit* s = scenario_named(a, "contact_slope_stick");
+    if (!s) {
+      v.measured = "-";
+      v.result = outcome::not_measured;
+    } else {
+      const contact_measure* creep = find(s->runs.front(), "creep down the slope");
+      const double size = creep ? std::abs(creep->value) : 0;
+      // 1e-6 m over 3 s: far above rounding (a float's position near 0.1 m is good to 1e-8).
+      const bool creeps = size > 1e-6;
+      v.measured = creeps ? "creeps " + fmt(size) + " m in 3 s" : "at rest (" + fmt(size) + " m in 3 s)";
+      v.evidence = "a box on a slope of 0.25 rad, mu = 0.5, over 3 s at h = 1/60; " +
+                   (s->trends.size() > 0 ? s->trends.front().words : std::string());
+      if (!creeps) v.result = outcome::confirmed;
+      else if (c.soft.value_or(false)) {
+        v.result = outcome::reading;
+        v.readings.push_back({"a soft contact, by design", v.measured, true});
+      } else v.result = outcome::measured;
+    }
+    out.push_back(v);
+  }
+  {  // At rest: a box on level ground and a stack of three stay where they were put.
+    verdict v;
+    v.claim = "at rest";
+    v.declared = c.soft.value_or(false) ? "soft contact" : "rigid contact";
+    double worst = 0;
+    std::string where;
+    for (const char* name : {"contact_rest", "contact_stack"})
+      if (const contact_scenario_audit* s = scenario_named(a, name))
+        if (const contact_measure* m = s->runs.empty() ? nullptr : find(s->runs.front(), "drift, largest"))
+          if (std::abs(m->value) >= worst) worst = std::abs(m->value), where = name;
+    if (where.empty()) {
+      v.measured = "-";
+      v.result = outcome::not_measured;
+    } else {
+      // The static friction's resolution: 1e-6 m over 3 s.
+      const bool drifts = worst > 1e-6;
+      v.measured = drifts ? "moves " + fmt(worst) + " m in 3 s (" + where + ")" : "at rest (" + fmt(worst) + " m in 3 s)";
+      v.evidence = "the largest displacement of a body of contact_rest and contact_stack over 3 s at h = 1/60 "
+                   "(resolution 1e-06 m)";
+      if (!drifts) v.result = outcome::confirmed;
+      else if (c.soft.value_or(false)) {
+        v.result = outcome::reading;
+        v.readings.push_back({"a soft contact, by design (it settles into its penetration)", v.measured, true});
+      } else v.result = outcome::measured;
+    }
+    out.push_back(v);
+  }
+  {  // Restitution: the apexes at e^(2k) h.
+    verdict v;
+    v.claim = "restitution";
+    v.declared = c.newton_restitution ? (*c.newton_restitution ? "Newton's" : "none") : "-";
+    const contact_scenario_audit* s = scenario_named(a, "contact_bounce");
+    if (!s) {
+      v.measured = "-";
+      v.result = c.newton_restitution ? outcome::not_measured : outcome::not_declared;
+    } else {
+      const contact_run& fine = s->runs.back();
+      const contact_measure* apex = find(fine, "apex 1");
+      v.measured = apex ? "apex 1 at " + fmt(apex->value) + " m (e^2 h = " + fmt(*apex->exact) + ")" : "no bounce";
+      v.evidence = "at the finest h; " + (s->trends.empty() ? std::string() : s->trends.front().measure + ": " + s->trends.front().words);
+      const bool holds = apex && std::abs(apex->error()) <= 0.02;  // 2 % of h: a step's worth at 1/960
+      if (!c.newton_restitution) v.result = outcome::not_declared;
+      else if (!*c.newton_restitution) v.result = c.soft.value_or(false) ? outcome::reading : outcome::not_declared;
+      else v.result = holds ? outcome::confirmed : outcome::measured;
+    }
+    out.push_back(v);
+  }
+  {  // Energy: none gained at a contact event or at rest.
+    verdict v;
+    v.claim = "energy";
+    v.declared = "not gained (e <= 1, at rest)";
+    double worst = 0;
+    std::string where;
+    int runs = 0;
+    for (const auto& s : a.scenarios) {
+      if (!s.refused.empty()) continue;
+      for (const auto& r : s.runs) {
+        ++runs;
+        const double steps = 1.0 / r.h * 3;
+        double gain = 0;
+        if (s.scenario == "contact_rest" || s.scenario == "contact_stack") {
+          if (const contact_measure* m = find(r, "energy gained")) gain = m->value / m->scale;
+        } else if (s.scenario == "contact_bounce") {
+          // An apex above the one before it (or the drop) gains energy.
+          double previous = s.runs.empty() ? 0 : 1.0;
+          for (int k = 1; k <= 3; ++k)
+            if (const contact_measure* m = find(r, "apex " + std::to_string(k))) {
+              gain = std::max(gain, (m->value / m->scale - previous));
+              previous = m->value / m->scale;
+            }
+        } else {
+          gain = r.energy_gain;
+        }
+        if (gain - rounding_gain(u, steps) > worst) {
+          worst = gain - rounding_gain(u, steps);
+          where = s.scenario + " at h = " + fmt(r.h);
+        }
+      }
+    }
+    v.measured = worst > 0 ? "gained " + fmt(worst) + " of its scale (" + where + ")" : "none gained";
+    v.evidence = "the largest energy gained over a step (at rest: since the start; a bounce: an apex above the one "
+                 "before), beyond 64 u sqrt(steps) of rounding";
+    v.result = runs == 0 ? outcome::not_measured : worst > 0 ? outcome::contradicted : outcome::confirmed;
+    if (runs == 0) v.measured = "-";
+    out.push_back(v);
+  }
+  {  // Agreement with the exact motions at the finest h.
+    verdict v;
+    v.claim = "exact motions";
+    v.declared = "Coulomb friction";
+    std::string converging, not_converging;
+    for (const auto& s : a.scenarios)
+      for (const auto& t : s.trends) {
+        if (s.scenario == "contact_slope_stick" || s.scenario == "contact_rest" || s.scenario == "contact_stack") continue;
+        (t.order || t.limit < 1e-6 ? converging : not_converging) += s.scenario + " " + t.measure + ": " + t.words + "; ";
+      }
+    v.measured = not_converging.empty() ? "every error falls with h" : "some errors do not fall with h";
+    v.evidence = not_converging + converging;
+    v.result = not_converging.empty() ? (converging.empty() ? outcome::not_measured : outcome::confirmed) : outcome::measured;
+    out.push_back(v);
+  }
+  return out;
+}
+}  // namespace
+
+contact_audit audit_contact(const engine_integrator& in, const contact_options& opt) {
+  contact_audit out;
+  out.integrator = in.name;
+  out.origin = in.origin;
+  if (in.contact) out.declared = *in.contact;
+  for (const scenario& s : contact_scenarios()) {
+    if (!opt.scenarios.empty() && std::find(opt.scenarios.begin(), opt.scenarios.end(), s.name) == opt.scenarios.end())
+      continue;
+    contact_scenario_audit a;
+    a.scenario = s.name;
+    a.description = s.description;
+    if (!in.contact) {
+      a.refused = in.name + ": the adapter builds no contact scenario";
+      out.scenarios.push_back(a);
+      continue;
+    }
+    if (opt.progress) opt.progress(in.name + " on " + s.name);
+    try {
+      double h = opt.h0;
+      for (int k = 0; k <= opt.halvings; ++k, h /= 2) a.runs.push_back(measures_of(s, run_scenario(in, s, h)));
+      a.trends = trends_of(a.runs);
+      if (s.name == "contact_slide") {
+        const double exact = reference::sliding_on_level<double>(s.contact->bodies.front().velocity0, s.contact->mu, s.gravity)
+                                 .stop_distance();
+        double lo = std::numeric_limits<double>::infinity(), hi = 0;
+        for (const double psi : {0.0, 30.0})
+          for (double theta = 0; theta <= 90; theta += 15) {
+            const scenario turned = with_direction(s, theta * M_PI / 180, psi * M_PI / 180);
+            const contact_run r = measures_of(turned, run_scenario(in, turned, opt.h0));
+            const contact_measure* d = find(r, "stopping distance");
+            if (!d || !r.failure.empty()) continue;
+            a.isotropy.push_back({theta, psi, d->value / exact});
+            lo = std::min(lo, d->value / exact);
+            hi = std::max(hi, d->value / exact);
+          }
+        if (!a.isotropy.empty()) a.anisotropy = hi - lo;
+      }
+      if (s.name == "contact_bounce")
+        for (const auto& m : a.runs.front().measures)
+          if (m.name.rfind("apex ", 0) == 0) a.apexes.push_back({std::stod(m.name.substr(5)), m.value, *m.exact});
+    } catch (const scenario_refused& e) {
+      a.refused = e.what();
+      a.runs.clear();
+    } catch (const std::exception& e) {
+      a.refused = std::string("failed: ") + e.what();
+      a.runs.clear();
+    }
+    out.scenarios.push_back(a);
+  }
+  out.verdicts = judge_contact(out, in.epsilon);
+  return out;
+}
+
+}  // namespace mechcheck::audit
