@@ -28,9 +28,13 @@
 /// isotropic (elliptic) cone, a pyramid or a box; a restitution documented as Newton's; a
 /// soft contact by design. Verdicts (judge_contact): a documented approximation measured is
 /// a *reading* with its size; an undocumented departure is *measured*; an energy gained at
-/// a bounce with e <= 1, a body at rest gaining energy, or a direction-dependent stopping
-/// distance under a cone documented as isotropic is *CONTRADICTED*; agreement within the
-/// study's resolution is *confirmed*.
+/// a bounce or a collision under a restitution documented as Newton's (e <= 1), a body at
+/// rest gaining energy, or a direction-dependent stopping distance under a cone documented
+/// as isotropic is *CONTRADICTED*; agreement within the study's resolution is *confirmed*.
+/// Energy gained elsewhere -- at an impact whose restitution the engine does not document
+/// (a soft contact's spring set by us), over a slide or a roll -- is *measured*: over a
+/// step for a rigid contact, from start to end for a soft one (its springs store energy
+/// the bodies' energy does not count).
 
 #include <array>
 #include <functional>
@@ -111,6 +115,10 @@ struct contact_run {
   std::vector<contact_measure> measures;
   std::string failure;  ///< the run failed or diverged (its step and the engine's words)
   double energy_gain = 0;  ///< largest rise of the mechanical energy over a step, relative to its scale
+  /// The mechanical energy at the end over the start's, relative to the same scale: what a
+  /// soft contact's run gains once its springs have let go (over a step it may return the
+  /// energy its penetration stored, which the bodies' energy does not count).
+  double energy_end_gain = 0;
 };
 
 struct contact_trend {
