@@ -536,7 +536,14 @@ int main(int argc, char** argv) {
     std::erase_if(scenarios_named, [](const std::string& n) { return n.rfind("contact_", 0) == 0; });
     std::vector<audit::contact_audit> contact_audits;
     if (!contact_named.empty()) {
+      // The integrators whose adapters build no contact scenario are named once, not
+      // refused scenario by scenario (unless one alone was asked for).
+      std::string without;
+      for (const auto& e : engines)
+        if (!e.contact && engines.size() > 1) without += (without.empty() ? "" : ", ") + e.name;
+      if (!without.empty()) std::cout << "no contact scenario in the adapters of: " << without << "\n";
       for (const auto& e : engines) {
+        if (!e.contact && engines.size() > 1) continue;
         audit::contact_options copt;
         copt.scenarios = contact_named;
         if (!quiet) copt.progress = progress;
@@ -564,6 +571,7 @@ int main(int argc, char** argv) {
     // The other scenarios, unless contact scenarios alone were named.
     if (contact_named.empty() || !scenarios_named.empty()) {
       for (const auto& e : engines) {
+        if (e.contact_only) continue;  // a contact setting: nothing to study without contact
         audit::engine_options eopt;
         eopt.scenarios = scenarios_named;
         eopt.drawn = drawn;

@@ -130,6 +130,49 @@ std::string mjcf_multibody(const scenario& s, int integrator) {
   return xml + "</mujoco>";
 }
 
+/// The restitution of a soft contact: MuJoCo's solref (timeconst, dampratio) makes the
+/// contact's reference dynamics a damped oscillator, whose rebound over an impact is
+/// exp(-zeta pi / sqrt(1 - zeta^2)); the damping ratio that gives e is
+/// zeta = -ln e / sqrt(pi^2 + ln^2 e) (1 for e = 0: MuJoCo's default, critical damping).
+double damping_ratio(double e) {
+  if (e <= 0) return 1;
+  const double l = std::log(e);
+  return -l / std::sqrt(M_PI * M_PI + l * l);
+}
+
+/// The MJCF of a contact scenario (contact.hpp): the ground a plane geom turned by the slope
+/// about y; each body a free body with its explicit inertial and one geom of its shape (a
+/// cylinder's axis, MuJoCo's z, turned onto the body's y); every geom with friction
+/// "mu 0 0" and condim 3 (sliding friction alone; condim 1, frictionless, where mu = 0):
+/// MuJoCo combines two geoms' friction by their maximum, so every contact has mu. A
+/// restitution e > 0 through solref's damping ratio (damping_ratio), the time constant
+/// MuJoCo's default 0.02 s. The cone pyramidal (MuJoCo's default) or elliptic.
+std::string mjcf_contact(const scenario& s, int integrator, bool elliptic) {
+  const contact_setup& c = *s.contact;
+  const std::string surface =
+      std::string(" condim=\"") + (c.mu > 0 ? "3" : "1") + "\" friction=\"" + numbers({c.mu > 0 ? c.mu : 1, 0, 0}) +
+      "\"" + (c.restitution > 0 ? " solref=\"" + numbers({0.02, damping_ratio(c.restitution)}) + "\"" : std::string());
+  std::string xml = "<mujoco><compiler angle=\"radian\"/><option timestep=\"0.01\" gravity=\"0 0 " +
+                    numbers({-s.gravity}) + "\" integrator=\"" + integrator_xml(integrator) + "\" cone=\"" +
+                    (elliptic ? "elliptic" : "pyramidal") + "\"/><worldbody>";
+  if (c.ground)
+    xml += "<geom name=\"ground\" type=\"plane\" size=\"0 0 1\" euler=\"0 " + numbers({c.slope}) + " 0\"" + surface + "/>";
+  for (const contact_body& b : c.bodies) {
+    xml += "<body><freejoint/><inertial pos=\"0 0 0\" mass=\"" + numbers({b.mass}) + "\" diaginertia=\"" + vec(b.inertia) +
+           "\"/>";
+    switch (b.shape) {
+      case contact_shape::box: xml += "<geom type=\"box\" size=\"" + vec(b.size) + "\"" + surface + "/>"; break;
+      case contact_shape::sphere: xml += "<geom type=\"sphere\" size=\"" + numbers({b.size(0)}) + "\"" + surface + "/>"; break;
+      case contact_shape::cylinder:
+        xml += "<geom type=\"cylinder\" size=\"" + numbers({b.size(0), b.size(1)}) + "\" euler=\"" +
+               numbers({-M_PI / 2, 0, 0}) + "\"" + surface + "/>";
+        break;
+    }
+    xml += "</body>";
+  }
+  return xml + "</worldbody></mujoco>";
+}
+
 void put_quaternion(const Eigen::Matrix3d& r, double* q) {
   const Eigen::Quaterniond e(r);
   q[0] = e.w(), q[1] = e.x(), q[2] = e.y(), q[3] = e.z();
@@ -197,12 +240,17 @@ constexpr int integrator_dexp = -1;
 
 class run final : public engine_run {
  public:
-  run(const scenario& s, int integrator)
+  run(const scenario& s, int integrator, bool elliptic = false)
       : s_(s),
         name_(integrator == integrator_dexp ? std::string("mujoco::RK4/dexp_corrected")
-                                            : std::string("mujoco::") + integrator_xml(integrator)),
+                                            : std::string("mujoco::") + integrator_xml(integrator) + (elliptic ? "/elliptic" : "")),
         dexp_(integrator == integrator_dexp) {
     if (dexp_) integrator = mjINT_RK4;
+    if (s.structure == body_structure::contact) {
+      start_contact(integrator, elliptic);
+      return;
+    }
+    if (elliptic) throw scenario_refused(name_ + ": a friction cone changes nothing without contact: contact scenarios only");
     if (s.central != 0 && s.joint != joint_kind::free)
       throw scenario_refused(name_ + ": the central force is applied to a free body only");
     if (s.structure == body_structure::robot) {
@@ -341,6 +389,24 @@ class run final : public engine_run {
   }
 
  private:
+  /// A contact scenario: its MJCF, each body's free joint set to its start.
+  void start_contact(int integrator, bool elliptic) {
+    model_ = load(mjcf_contact(s_, integrator, elliptic));
+    data_ = mj_makeData(model_);
+    if (!data_) throw error(name_ + ": mj_makeData failed");
+    const contact_setup& c = *s_.contact;
+    for (std::size_t k = 0; k < c.bodies.size(); ++k) {
+      const contact_body& b = c.bodies[k];
+      double* q = data_->qpos + 7 * k;
+      double* v = data_->qvel + 6 * k;
+      for (int i = 0; i < 3; ++i) q[i] = b.position0(i), v[i] = b.velocity0(i);
+      put_quaternion(b.rotation0, q + 3);
+      const Eigen::Vector3d w_body = b.rotation0.transpose() * b.omega0;
+      for (int i = 0; i < 3; ++i) v[3 + i] = w_body(i);
+    }
+    mj_forward(model_, data_);
+  }
+
   /// A robot scenario: the model of robot_mjcf (the dynamics adapter's, mujoco_dynamics.cpp)
   /// with the integrator set on mjModel::opt, each coordinate at its joint's qpos and dof.
   void start_robot(const robot_start& r, int integrator) {
@@ -424,6 +490,23 @@ engine_shapes shapes() {
   return e;
 }
 
+namespace {
+/// What MuJoCo's documentation says of its contact (XML reference, option/cone and
+/// geom/friction; Computation chapter, soft constraints).
+contact_claims contact_claims_of(bool elliptic) {
+  contact_claims c;
+  c.friction_cone = elliptic ? "elliptic" : "pyramidal";
+  c.newton_restitution = false;
+  c.soft = true;
+  c.words = std::string("MuJoCo XML reference, option/cone: \"[pyramidal, elliptic], 'pyramidal'. The type of contact "
+                        "friction cone. Elliptic cones are a better model of the physical reality, but pyramidal cones "
+                        "sometimes make the solver faster and more robust.\"; the contacts are soft constraints (solref, "
+                        "solimp); no restitution coefficient (a bounce through solref's damping ratio)") +
+            (elliptic ? "; cone=\"elliptic\" set" : "; the default cone");
+  return c;
+}
+}  // namespace
+
 std::vector<engine_integrator> integrators() {
   struct info {
     int id;
@@ -451,6 +534,17 @@ std::vector<engine_integrator> integrators() {
     e.start = [id](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, id); };
     e.multibody = true;
     e.robots = true;
+    if (id == mjINT_EULER) e.contact = contact_claims_of(false);  // MuJoCo's default integrator and cone
+    out.push_back(std::move(e));
+  }
+  {  // The elliptic cone, on the default integrator: contact scenarios only.
+    engine_integrator e;
+    e.name = "mujoco::Euler/elliptic";
+    e.origin = "MuJoCo " + version() + ", mjINT_EULER with <option cone=\"elliptic\"/>: the contact scenarios only";
+    e.declared.order = 1;
+    e.start = [](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, mjINT_EULER, true); };
+    e.contact = contact_claims_of(true);
+    e.contact_only = true;
     out.push_back(std::move(e));
   }
   // The fix of mujoco::RK4's orientation (docs/findings/upstream/mujoco-rk4.md), as an

@@ -141,6 +141,9 @@ struct engine_integrator {
   /// The adapter builds contact scenarios (contact.hpp), and what the engine declares of its
   /// contact; without it they are refused before start is called.
   std::optional<contact_claims> contact;
+  /// A configuration of the engine's contact alone (a friction cone, a solver setting) that
+  /// changes nothing without contact: the other studies skip it.
+  bool contact_only = false;
   /// The adapter builds robot scenarios (body_structure::robot: trees of revolute and
   /// prismatic joints from a robots::robot, read back in its joint coordinates); without it
   /// they are refused before start is called.
