@@ -72,6 +72,10 @@ class run final : public engine_run {
     world_ = dWorldCreate();
     dWorldSetGravity(world_, 0, 0, -s.gravity);
     if (m.iterations > 0) dWorldSetQuickStepNumIterations(world_, m.iterations);
+    if (s.structure == body_structure::contact) {
+      build_contact(*s.contact);
+      return;
+    }
     if (s.structure != body_structure::one_body) {
       build_multibody(s, m);
       return;
@@ -109,6 +113,8 @@ class run final : public engine_run {
     dBodySetFiniteRotationMode(body_, m.finite ? 1 : 0);
   }
   ~run() override {
+    if (contacts_) dJointGroupDestroy(contacts_);
+    if (space_) dSpaceDestroy(space_);  // destroys its geoms
     if (world_) dWorldDestroy(world_);  // destroys its bodies and joints
   }
   run(const run&) = delete;
@@ -213,7 +219,62 @@ class run final : public engine_run {
     }
   }
 
+  /// A contact scenario (contact.hpp): a body per contact body with its mass and frame, a
+  /// geom of its shape (dCreateBox with the full edges, dCreateSphere, dCreateCylinder with
+  /// its axis, ODE's z, turned onto the body's y), the ground a dCreatePlane through the
+  /// origin with the slope's normal; every contact (near_callback) with mu, the friction
+  /// pyramid (dContactApprox1) and, where e > 0, dContactBounce with bounce = e and
+  /// bounce_vel = 0 (Newton's law at every speed).
+  void build_contact(const contact_setup& c) {
+    space_ = dSimpleSpaceCreate(nullptr);
+    contacts_ = dJointGroupCreate(0);
+    if (c.ground) {
+      const Eigen::Vector3d n = c.normal();
+      dCreatePlane(space_, n(0), n(1), n(2), 0);
+    }
+    for (const contact_body& b : c.bodies) {
+      link l;
+      l.mass = b.mass;
+      l.inertia = b.inertia;
+      body_frame f;
+      f.rotation = b.rotation0;
+      f.position = b.position0;
+      f.velocity = b.velocity0;
+      f.omega = b.omega0;
+      dBodyID body = add_body(l, f);
+      dGeomID g = nullptr;
+      switch (b.shape) {
+        case contact_shape::box: g = dCreateBox(space_, 2 * b.size(0), 2 * b.size(1), 2 * b.size(2)); break;
+        case contact_shape::sphere: g = dCreateSphere(space_, b.size(0)); break;
+        case contact_shape::cylinder: g = dCreateCylinder(space_, b.size(0), 2 * b.size(1)); break;
+      }
+      dGeomSetBody(g, body);
+      if (b.shape == contact_shape::cylinder) {
+        dMatrix3 r = {1, 0, 0, 0, 0, 0, 1, 0, 0, -1, 0, 0};  // R_x(-pi/2): z onto y
+        dGeomSetOffsetRotation(g, r);
+      }
+    }
+  }
+
+  static void near_callback(void* data, dGeomID a, dGeomID b) {
+    auto* self = static_cast<run*>(data);
+    const contact_setup& c = *self->s_.contact;
+    dContact found[8];
+    const int n = dCollide(a, b, 8, &found[0].geom, sizeof(dContact));
+    for (int i = 0; i < n; ++i) {
+      dContact& k = found[i];
+      k.surface = dSurfaceParameters{};
+      k.surface.mode = dContactApprox1 | (c.restitution > 0 ? dContactBounce : 0);
+      k.surface.mu = c.mu;
+      k.surface.bounce = c.restitution;
+      k.surface.bounce_vel = 0;
+      dJointID j = dJointCreateContact(self->world_, self->contacts_, &k);
+      dJointAttach(j, dGeomGetBody(a), dGeomGetBody(b));
+    }
+  }
+
   void step_multibody(double h) {
+    if (space_) dSpaceCollide(space_, this, &near_callback);
     if (s_.gravitation != 0)  // ODE's force accumulators, cleared by each step
       for (std::size_t k = 0; k < bodies_.size(); ++k)
         for (std::size_t j = k + 1; j < bodies_.size(); ++j) {
@@ -229,6 +290,7 @@ class run final : public engine_run {
     } catch (const error& e) {
       throw convergence_error(name_ + ": step " + std::to_string(steps_) + ": " + e.what());
     }
+    if (contacts_) dJointGroupEmpty(contacts_);
     if (!ok) throw convergence_error(name_ + ": step " + std::to_string(steps_) + ": the step function failed (memory)");
     for (std::size_t k = 0; k < bodies_.size(); ++k)
       if (!vec(dBodyGetPosition(bodies_[k])).allFinite() || !vec(dBodyGetAngularVel(bodies_[k])).allFinite())
@@ -243,6 +305,8 @@ class run final : public engine_run {
   dWorldID world_ = nullptr;
   dBodyID body_ = nullptr;
   dJointID joint_ = nullptr;
+  dSpaceID space_ = nullptr;         ///< a contact scenario's geoms
+  dJointGroupID contacts_ = nullptr;  ///< a step's contact joints
   long long steps_ = 0;
 };
 }  // namespace
@@ -301,6 +365,17 @@ std::vector<engine_integrator> integrators() {
                    "; ODE's headers state no order";
         e.start = [m](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, m); };
         e.multibody = true;
+        if (gyroscopic && !finite) {  // the defaults: both step functions meet contact
+          contact_claims c;
+          c.friction_cone = "pyramidal";
+          c.newton_restitution = true;
+          c.soft = false;
+          c.words = "ODE " + version() + " contact.h and the manual: dSurfaceParameters::mu \"Coulomb friction "
+                    "coefficient\", dContactApprox1_1 \"Use the friction pyramid approximation for friction direction 1\", "
+                    "bounce \"Coefficient of restitution\", dContactBounce \"Restore collision energy anti-parallel to the "
+                    "normal\"; the world's ERP 0.2 and CFM 1e-5 (defaults)";
+          e.contact = c;
+        }
         out.push_back(std::move(e));
       }
   // QuickStep with eight times its default SOR iterations (objects.h,
