@@ -54,6 +54,7 @@ TEST(engines, every_adapter_starts_each_scenario_at_its_exact_state) {
   // bookkeeping: 1e-12 of the scale).
   for (const auto& e : audit::engines_found())
     for (const auto& s : audit::scenarios()) {
+      if (e.contact_only) continue;  // a contact setting: contact scenarios alone (contact_test.cpp)
       // Multibody scenarios go to adapters that build them (audit_engine refuses the rest).
       if (s.structure != audit::body_structure::one_body && !e.multibody) continue;
       std::unique_ptr<audit::engine_run> run;
@@ -80,6 +81,7 @@ TEST(engines, every_adapter_advances_its_clock_by_h_a_step) {
   // An integrator that refuses the step size (Simbody's CPodes keeps its own error test)
   // must say so as a typed error naming the step.
   for (const auto& e : audit::engines_found()) {
+    if (e.contact_only) continue;
     std::unique_ptr<audit::engine_run> run;
     try {
       run = e.start(s);
@@ -170,11 +172,14 @@ TEST(engines, without_the_gyroscopic_term_a_free_top_converges_to_the_wrong_moti
 TEST(mujoco, integrators_and_their_orders_on_the_free_top) {
   EXPECT_EQ(audit::mujoco::version(), "2.2.2");
   const auto all = audit::mujoco::integrators();
-  ASSERT_EQ(all.size(), 4u);
+  // Euler, implicit, RK4, RK4/dexp_corrected, and Euler/elliptic for contact alone.
+  ASSERT_EQ(all.size(), 5u);
+  EXPECT_EQ(std::count_if(all.begin(), all.end(), [](const auto& e) { return e.contact_only && e.contact; }), 1);
   audit::engine_options opt;
   opt.scenarios = {"free_top", "pendulum_small"};
   opt.long_run_steps = 1 << 14;
   for (const auto& e : all) {
+    if (e.contact_only) continue;
     const auto a = audit::audit_engine(e, opt);
     EXPECT_EQ(a.order.result, outcome::confirmed) << e.name << ": " << a.order.evidence;
     EXPECT_NEAR(a.scenarios[0].global.fit.value, *e.declared.order, 0.1) << e.name;

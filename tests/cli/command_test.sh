@@ -92,7 +92,7 @@ printf '<robot name="r"><link name="a"/><joint name="j" type="floating"/></robot
 expect 1 "bad.urdf: robot r: joint j: type floating is not modelled" --dynamics '*' --urdf "$work/bad.urdf" -o "$work/d"
 # --list names every kind; --help names the tableaus.
 for section in "steppers \([0-9]+;" "adaptive drivers \([0-9]+;" "engine integrators \([0-9]+;" \
-               "engine scenarios \(14;" "problems \([0-9]+;" "dynamics libraries \([0-9]+;"; do
+               "engine scenarios \(25;" "problems \([0-9]+;" "dynamics libraries \([0-9]+;"; do
   expect 0 "^$section" --list
 done
 expect 0 "The classical tableaus \(--tableau\): .*tableaus" --help
