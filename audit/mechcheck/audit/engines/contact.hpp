@@ -28,11 +28,13 @@
 /// isotropic (elliptic) cone, a pyramid or a box; a restitution documented as Newton's; a
 /// soft contact by design. Verdicts (judge_contact): a documented approximation measured is
 /// a *reading* with its size; an undocumented departure is *measured*; an energy gained at
-/// a bounce or a collision under a restitution documented as Newton's (e <= 1), a body at
-/// rest gaining energy, or a direction-dependent stopping distance under a cone documented
-/// as isotropic is *CONTRADICTED*; agreement within the study's resolution is *confirmed*.
-/// Energy gained elsewhere -- at an impact whose restitution the engine does not document
-/// (a soft contact's spring set by us), over a slide or a roll -- is *measured*: over a
+/// a bounce or a collision under a restitution documented as Newton's (e <= 1), or a
+/// direction-dependent stopping distance under a cone documented as isotropic is
+/// *CONTRADICTED*; agreement within the study's resolution is *confirmed*. Energy gained
+/// elsewhere -- at an impact whose restitution the engine does not document (a soft
+/// contact's spring set by us), by a body at rest (the position correction the engines
+/// document, ERP or a split impulse, lifts a penetrating body), over a slide or a roll --
+/// is *measured*: over a
 /// step for a rigid contact, from start to end for a soft one (its springs store energy
 /// the bodies' energy does not count).
 
@@ -153,7 +155,7 @@ struct contact_audit {
   contact_claims declared;
   std::vector<contact_scenario_audit> scenarios;
   /// The verdicts: "friction cone" (isotropy), "static friction" (creep), "restitution"
-  /// (bounces and collisions), "energy" (no energy gained at contact events or at rest),
+  /// (bounces and collisions), "energy" (no energy gained at an impact; its size elsewhere),
   /// "agreement" (the exact answers at the finest h).
   std::vector<verdict> verdicts;
   bool claims_hold() const;
