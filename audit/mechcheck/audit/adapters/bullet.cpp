@@ -1,5 +1,6 @@
 #include "mechcheck/audit/adapters/bullet.hpp"
 #include "mechcheck/audit/adapters/detail/bullet_robot.hpp"
+#include "mechcheck/audit/engines/contact.hpp"
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
@@ -53,6 +54,10 @@ class run final : public engine_run {
                                                         config_.get());
     world_->setGravity(btVector3(0, 0, -s.gravity));
     shape_ = std::make_unique<btSphereShape>(0.1);  // collision only; the inertia is given
+    if (s.structure == body_structure::contact) {
+      build_contact(*s.contact, g);
+      return;
+    }
     if (s.structure != body_structure::one_body) {
       build_multibody(s, g);
       return;
@@ -93,6 +98,7 @@ class run final : public engine_run {
     if (body_) world_->removeRigidBody(body_.get());
     for (auto& j : joints_) world_->removeConstraint(j.get());
     for (auto& b : bodies_) world_->removeRigidBody(b.get());
+    if (ground_) world_->removeRigidBody(ground_.get());
   }
   run(const run&) = delete;
   run& operator=(const run&) = delete;
@@ -155,6 +161,51 @@ class run final : public engine_run {
     return b;
   }
 
+  /// A contact scenario (contact.hpp): a btRigidBody per body with its mass, its moments and
+  /// its shape (btBoxShape with the half-edges, btSphereShape, btCylinderShape, whose axis is
+  /// the body's y), colliding with everything; the ground a static btStaticPlaneShape
+  /// through the origin with the slope's normal. Bullet combines two objects' friction and
+  /// restitution by their product (btManifoldResult::calculateCombinedFriction and
+  /// calculateCombinedRestitution), so every object carries sqrt(mu) and sqrt(e) and every
+  /// pair has mu and e.
+  void build_contact(const contact_setup& c, const gyroscopic_mode& g) {
+    const double friction = std::sqrt(c.mu), restitution = std::sqrt(c.restitution);
+    if (c.ground) {
+      shapes_.push_back(std::make_unique<btStaticPlaneShape>(bt(c.normal()), 0));
+      btRigidBody::btRigidBodyConstructionInfo info(0, nullptr, shapes_.back().get());
+      info.m_friction = friction;
+      info.m_restitution = restitution;
+      ground_ = std::make_unique<btRigidBody>(info);
+      world_->addRigidBody(ground_.get());
+    }
+    for (const contact_body& b : c.bodies) {
+      switch (b.shape) {
+        case contact_shape::box: shapes_.push_back(std::make_unique<btBoxShape>(bt(b.size))); break;
+        case contact_shape::sphere: shapes_.push_back(std::make_unique<btSphereShape>(b.size(0))); break;
+        case contact_shape::cylinder:
+          shapes_.push_back(std::make_unique<btCylinderShape>(btVector3(b.size(0), b.size(1), b.size(0))));
+          break;
+      }
+      btTransform start;
+      start.setOrigin(bt(b.position0));
+      const Eigen::Matrix3d& r = b.rotation0;
+      start.setBasis(btMatrix3x3(r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0), r(2, 1), r(2, 2)));
+      btRigidBody::btRigidBodyConstructionInfo info(b.mass, nullptr, shapes_.back().get(), bt(b.inertia));
+      info.m_startWorldTransform = start;
+      info.m_linearDamping = 0;
+      info.m_angularDamping = 0;
+      info.m_friction = friction;
+      info.m_restitution = restitution;
+      bodies_.push_back(std::make_unique<btRigidBody>(info));
+      btRigidBody& body = *bodies_.back();
+      body.setActivationState(DISABLE_DEACTIVATION);
+      body.setFlags(g.flags);
+      world_->addRigidBody(&body);
+      body.setLinearVelocity(bt(b.velocity0));
+      body.setAngularVelocity(bt(b.omega0));
+    }
+  }
+
   /// A chain: a btRigidBody per link at its start frame, a btHingeConstraint about y at
   /// each link's origin to the link before (to the world for link 0), and one to the world
   /// at the loop's anchor; free bodies alone (their gravitation applied before each step).
@@ -213,6 +264,8 @@ class run final : public engine_run {
   std::unique_ptr<btDiscreteDynamicsWorld> world_;
   std::unique_ptr<btCollisionShape> shape_;
   std::unique_ptr<btRigidBody> body_;
+  std::unique_ptr<btRigidBody> ground_;                    ///< a contact scenario's plane
+  std::vector<std::unique_ptr<btCollisionShape>> shapes_;  ///< a contact scenario's shapes
   std::unique_ptr<btTypedConstraint> joint_;
   std::vector<std::unique_ptr<btRigidBody>> bodies_;
   std::vector<std::unique_ptr<btTypedConstraint>> joints_;
@@ -473,6 +526,14 @@ std::vector<engine_integrator> integrators() {
     const gyroscopic_mode* mode = &g;
     e.start = [mode](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, *mode); };
     e.multibody = true;
+    if (g.flags == BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY) {  // the default meets contact
+      contact_claims c;  // Bullet's headers name no friction cone, no restitution law, no softness
+      c.words = "Bullet " + version() + " btRigidBody.h: m_friction \"best simulation results when friction is non-zero\", "
+                "m_restitution \"best simulation results using zero restitution\"; btContactSolverInfo.h: "
+                "m_restitutionVelocityThreshold 0.2 \"if the relative velocity is below this threshold, there is zero "
+                "restitution\"; btContactSolverInfo's defaults (m_splitImpulse true, m_erp2 0.2, m_solverMode SOLVER_USE_WARMSTARTING | SOLVER_SIMD)";
+      e.contact = c;
+    }
     out.push_back(std::move(e));
   }
   engine_integrator m;
