@@ -134,3 +134,37 @@ TEST(contact, the_engines_adapters_give_every_pair_mu_and_e) {
   std::cout << seen << " engine integrators with contact scenarios in this build\n";
 }
 }  // namespace contact_test
+
+namespace contact_test {
+// The random cases (contact_cases): the exact engine keeps every property on every case; a
+// pyramid is caught on isotropy, shrunk to yaw 0 (the pyramid is clamped per world axis, so
+// the yaw plays no part), the lightest mass and the smallest box, and written as the setup
+// in JSON; a creeping stick is caught on the slope.
+TEST(contact, random_cases_confirm_the_exact_engine_and_shrink_a_pyramid_and_a_creep) {
+  audit::contact_options opt{{"contact_slide"}};
+  opt.cases = 40;
+  opt.seed = 3;
+  const audit::contact_audit exact = audit::audit_contact(exact_contact_engine(variant::exact), opt);
+  ASSERT_TRUE(exact.cases);
+  EXPECT_EQ(exact.cases->checked, 40);
+  EXPECT_EQ(exact.cases->property, "") << exact.cases->counterexample;
+  EXPECT_LT(exact.cases->isotropy, 1e-12);
+  EXPECT_LT(exact.cases->mass_and_size, 1e-12);
+  EXPECT_EQ(verdict_of(exact, "random cases").result, outcome::confirmed) << verdict_of(exact, "random cases").measured;
+
+  const audit::contact_audit pyramid = audit::audit_contact(exact_contact_engine(variant::pyramid), opt);
+  ASSERT_TRUE(pyramid.cases);
+  EXPECT_EQ(pyramid.cases->property, "isotropy");
+  EXPECT_EQ(verdict_of(pyramid, "random cases").result, outcome::contradicted);
+  for (const char* shrunk : {"psi 0 deg", "mass 0.01 kg", "seed 3", "--contact-cases 40 --seed 3"})
+    EXPECT_NE(pyramid.cases->counterexample.find(shrunk), std::string::npos) << shrunk << " in " << pyramid.cases->counterexample;
+  EXPECT_EQ(pyramid.cases->model_extension, "json");
+  EXPECT_NE(pyramid.cases->model.find("\"scenario\": \"contact_slide\""), std::string::npos) << pyramid.cases->model;
+
+  const audit::contact_audit creep = audit::audit_contact(exact_contact_engine(variant::creep), opt);
+  ASSERT_TRUE(creep.cases);
+  EXPECT_EQ(creep.cases->property, "no creep") << creep.cases->counterexample;
+  EXPECT_EQ(verdict_of(creep, "random cases").result, outcome::measured);
+  EXPECT_NE(creep.cases->model.find("contact_slope_stick"), std::string::npos);
+}
+}  // namespace contact_test

@@ -225,7 +225,7 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   app.add_option("--robots", dynamics_robots, "with --dynamics: random robots (or states of --urdf robots; default 100)")
       ->check(CLI::Range(1, 1000000));
-  app.add_option("--seed", dynamics_seed, "the seed of the random robots and bodies (--dynamics, --engine-robots, --engine-bodies; default 1)");
+  app.add_option("--seed", dynamics_seed, "the seed of the random robots, bodies and contact cases (--dynamics, --engine-robots, --engine-bodies, --contact-cases; default 1)");
   std::vector<std::string> engine_scenarios, scenario_names;
   for (const auto& s : audit::scenarios()) scenario_names.push_back(s.name);
   for (const auto& s : audit::contact_scenarios()) scenario_names.push_back(s.name);
@@ -244,6 +244,12 @@ int main(int argc, char** argv) {
                  "with --engine: N random free bodies (principal axes turned anywhere, spun about none of them; "
                  "--seed) as scenarios beside the hand-built ones, named body_<seed>_<k>")
       ->check(CLI::Range(0, 1000));
+  int contact_cases = 0;
+  app.add_option("--contact-cases", contact_cases,
+                 "with a contact scenario named: N random sliding and resting boxes per engine (direction, yaw, mu, "
+                 "mass, size, speed, slope; --seed) held to isotropy, independence of mass and size and no creep, the "
+                 "first one broken shrunk and written to the report as the engine's file (MJCF) or JSON")
+      ->check(CLI::Range(0, 100000));
   app.add_option("--scenario", engine_scenarios,
                  "engine scenarios, as shell patterns (default all; 'robot_*' the --engine-robots alone, "
                  "'body_*' the --engine-bodies)");
@@ -546,6 +552,8 @@ int main(int argc, char** argv) {
         if (!e.contact && engines.size() > 1) continue;
         audit::contact_options copt;
         copt.scenarios = contact_named;
+        copt.cases = contact_cases;
+        copt.seed = dynamics_seed;
         if (!quiet) copt.progress = progress;
         contact_audits.push_back(audit::audit_contact(e, copt));
       }

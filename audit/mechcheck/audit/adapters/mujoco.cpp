@@ -88,7 +88,7 @@ std::string mjcf(const scenario& s, int integrator) {
   return buf;
 }
 
-std::string numbers(std::initializer_list<double> xs) {
+std::string numbers(const std::vector<double>& xs) {
   std::string out;
   char buf[32];
   for (double x : xs) {
@@ -176,6 +176,29 @@ std::string mjcf_contact(const scenario& s, int integrator, bool elliptic) {
 void put_quaternion(const Eigen::Matrix3d& r, double* q) {
   const Eigen::Quaterniond e(r);
   q[0] = e.w(), q[1] = e.x(), q[2] = e.y(), q[3] = e.z();
+}
+
+/// A contact scenario as a file MuJoCo loads on its own: mjcf_contact at h = 1/60 (the
+/// contact audit's default step) with the start as the keyframe "start" (qpos: each free
+/// joint's position and quaternion; qvel: its velocity and its body-frame angular velocity).
+/// `simulate` or mj_resetDataKeyframe(m, d, 0) and mj_step reproduce the run.
+std::string mjcf_contact_case(const scenario& s, bool elliptic) {
+  std::string xml = mjcf_contact(s, mjINT_EULER, elliptic);
+  const std::string step = "timestep=\"0.01\"";
+  xml.replace(xml.find(step), step.size(), "timestep=\"" + numbers({1.0 / 60}) + "\"");
+  std::vector<double> qpos, qvel;
+  for (const contact_body& b : s.contact->bodies) {
+    double q[4];
+    put_quaternion(b.rotation0, q);
+    const Eigen::Vector3d w_body = b.rotation0.transpose() * b.omega0;
+    for (int i = 0; i < 3; ++i) qpos.push_back(b.position0(i));
+    for (int i = 0; i < 4; ++i) qpos.push_back(q[i]);
+    for (int i = 0; i < 3; ++i) qvel.push_back(b.velocity0(i));
+    for (int i = 0; i < 3; ++i) qvel.push_back(w_body(i));
+  }
+  xml.replace(xml.rfind("</mujoco>"), 9,
+              "<keyframe><key name=\"start\" qpos=\"" + numbers(qpos) + "\" qvel=\"" + numbers(qvel) + "\"/></keyframe></mujoco>");
+  return xml;
 }
 
 /// The fourth-order Runge-Kutta method on MuJoCo's state with the orientation integrated
@@ -534,7 +557,11 @@ std::vector<engine_integrator> integrators() {
     e.start = [id](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, id); };
     e.multibody = true;
     e.robots = true;
-    if (id == mjINT_EULER) e.contact = contact_claims_of(false);  // MuJoCo's default integrator and cone
+    if (id == mjINT_EULER) {  // MuJoCo's default integrator and cone
+      e.contact = contact_claims_of(false);
+      e.contact_model = [](const scenario& s) { return mjcf_contact_case(s, false); };
+      e.contact_model_extension = "xml";
+    }
     out.push_back(std::move(e));
   }
   {  // The elliptic cone, on the default integrator: contact scenarios only.
@@ -545,6 +572,8 @@ std::vector<engine_integrator> integrators() {
     e.start = [](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, mjINT_EULER, true); };
     e.contact = contact_claims_of(true);
     e.contact_only = true;
+    e.contact_model = [](const scenario& s) { return mjcf_contact_case(s, true); };
+    e.contact_model_extension = "xml";
     out.push_back(std::move(e));
   }
   // The fix of mujoco::RK4's orientation (docs/findings/upstream/mujoco-rk4.md), as an

@@ -39,6 +39,7 @@
 /// the bodies' energy does not count).
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <ostream>
 #include <memory>
@@ -150,6 +151,30 @@ struct contact_scenario_audit {
   std::vector<std::array<double, 3>> apexes;
 };
 
+/// Random contact cases, shrunk (contact_options::cases): each a sliding box (direction theta
+/// and yaw psi over the whole circle, mu in [0.05, 1.5], mass 0.01 to 100 kg, half-edge 0.03
+/// to 3 m, speed 0.5 to 5 m/s) and the same box on a slope below its friction angle
+/// (tan a = f mu, f in [0, 0.9]), at h = 1/60, held to the properties Coulomb's friction
+/// has exactly whatever the step: the stopping distance independent of theta and psi
+/// (isotropy; where the engine documents no pyramid or box), of the mass and of the size
+/// (against the same slide of 1 kg and half-edge 0.1 m), each to 1e-3 of v0^2 / (2 mu g);
+/// no creep on the slope (rate over the second second under 1e-6 m/s; where the engine
+/// documents no soft contact). The first case to break one is shrunk by RapidCheck (the
+/// angles towards 0, mu towards 0.05, the mass towards the lightest, the size towards the
+/// smallest, the slope towards level) and kept with its seed, as the engine's own file where
+/// the adapter writes one (MuJoCo's MJCF), else as the setup in JSON.
+struct contact_cases {
+  int asked = 0, checked = 0;
+  std::uint64_t seed = 1;
+  bool isotropy_checked = false, creep_checked = false;
+  /// The largest of each over the cases checked (relative to v0^2 / (2 mu g); m/s).
+  double isotropy = 0, mass_and_size = 0, creep_rate = 0;
+  std::string property;        ///< the property broken ("" none)
+  std::string counterexample;  ///< the shrunk case, its numbers and the command that finds it again
+  std::string model;           ///< the shrunk case as a file
+  std::string model_extension; ///< "xml" (MJCF) or "json"
+};
+
 struct contact_audit {
   std::string integrator, origin;
   contact_claims declared;
@@ -158,6 +183,7 @@ struct contact_audit {
   /// (bounces and collisions), "energy" (no energy gained at an impact; its size elsewhere),
   /// "agreement" (the exact answers at the finest h).
   std::vector<verdict> verdicts;
+  std::optional<contact_cases> cases;  ///< contact_options::cases > 0
   bool claims_hold() const;
 };
 
@@ -165,12 +191,22 @@ struct contact_options {
   std::vector<std::string> scenarios;  ///< names; empty: all
   double h0 = 1.0 / 60;
   int halvings = 4;
+  /// Random cases (0: none), drawn from `seed`: see contact_cases.
+  int cases = 0;
+  std::uint64_t seed = 1;
   std::function<void(const std::string&)> progress;
 };
 
 /// The contact scenarios (scenarios.hpp's `scenario`, kind contact), each with its exact
 /// answers; their names begin with "contact_".
 std::vector<scenario> contact_scenarios();
+
+/// The random cases' scenarios (contact_options::cases): a box of half-edges (half, half,
+/// half/2) and `mass` sent at `speed` in direction theta (rad, from x), yawed by psi, on level
+/// ground with friction mu (named contact_slide); the same box at rest on a slope (rad)
+/// below its friction angle (named contact_slope_stick).
+scenario contact_slide_case(double mu, double mass, double half, double speed, double theta, double psi);
+scenario contact_stick_case(double mu, double slope, double mass, double half);
 
 /// contact_slide with the box sent in direction theta (rad, from x) and yawed by psi about z.
 scenario with_direction(const scenario& slide, double theta, double psi);
@@ -183,7 +219,8 @@ void print_contact(std::ostream& out, const std::vector<contact_audit>& audits);
 std::string contact_to_json(const std::vector<contact_audit>& audits);
 std::string contact_to_markdown(const std::vector<contact_audit>& audits);
 /// Writes contact.json, contact.md and the SVG plots (the stopping distance against theta
-/// for each integrator, the apex heights against e^(2k) h) into `directory`.
+/// for each integrator, the apex heights against e^(2k) h) into `directory`, and each random
+/// cases' counterexample as contact-counterexample-<integrator>.<xml or json>.
 std::vector<std::string> write_contact_report(const std::string& directory, const std::vector<contact_audit>& audits);
 
 }  // namespace mechcheck::audit

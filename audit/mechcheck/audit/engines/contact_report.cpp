@@ -2,6 +2,7 @@
 // plots (the stopping distance against the direction of motion, the apex heights against
 // e^(2k) h).
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -25,6 +26,17 @@ std::string sci(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g", x);
   return buf;
+}
+
+/// A random case's counterexample file: contact-counterexample-mujoco-Euler-elliptic.xml.
+std::string counterexample_file(const std::string& integrator, const std::string& extension) {
+  std::string name;
+  for (const char ch : integrator) {
+    const bool plain = std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+    if (plain) name += ch;
+    else if (!name.empty() && name.back() != '-') name += '-';
+  }
+  return "contact-counterexample-" + name + "." + extension;
 }
 
 /// "0.412 m (exact 0.408, +1.0e-02)" at h = 1/60.
@@ -173,6 +185,16 @@ std::string contact_to_json(const std::vector<contact_audit>& audits) {
     json verdicts = json::array();
     for (const auto& v : a.verdicts) verdicts.push_back(json::parse(verdict_json_text(v)));
     j["verdicts"] = verdicts;
+    if (a.cases) {
+      const contact_cases& k = *a.cases;
+      json jc = {{"asked", k.asked}, {"checked", k.checked}, {"seed", k.seed}, {"mass_and_size", k.mass_and_size}};
+      if (k.isotropy_checked) jc["isotropy"] = k.isotropy;
+      if (k.creep_checked) jc["creep_rate"] = k.creep_rate;
+      if (!k.property.empty())
+        jc["broken"] = k.property, jc["counterexample"] = k.counterexample,
+        jc["file"] = counterexample_file(a.integrator, k.model_extension);
+      j["random_cases"] = jc;
+    }
     all.push_back(j);
   }
   return all.dump(1) + "\n";
@@ -217,6 +239,8 @@ std::vector<std::string> write_contact_report(const std::string& directory, cons
     written.push_back(path);
   };
   write("contact.json", contact_to_json(audits));
+  for (const auto& a : audits)
+    if (a.cases && !a.cases->property.empty()) write(counterexample_file(a.integrator, a.cases->model_extension), a.cases->model);
   write("contact.md", contact_to_markdown(audits));
   std::vector<plot_series> iso, bounce;
   for (const auto& a : audits)

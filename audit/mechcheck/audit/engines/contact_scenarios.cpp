@@ -220,6 +220,28 @@ std::vector<scenario> contact_scenarios() {
   return out;
 }
 
+scenario contact_slide_case(double mu, double mass, double half, double speed, double theta, double psi) {
+  contact_setup c;
+  c.mu = mu;
+  contact_body b = box(mass, {half, half, half / 2});
+  b.rotation0 = Eigen::AngleAxisd(psi, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  place_on_ground(b, c, 0);
+  b.velocity0 = speed * Eigen::Vector3d(std::cos(theta), std::sin(theta), 0);
+  c.bodies.push_back(b);
+  // To rest and 0.25 s beyond: the drift after the stop is part of the distance.
+  return contact_scenario("contact_slide", "a drawn sliding box", c, speed / (mu * g) + 0.25);
+}
+
+scenario contact_stick_case(double mu, double slope, double mass, double half) {
+  contact_setup c;
+  c.slope = slope;
+  c.mu = mu;
+  contact_body b = box(mass, {half, half, half / 2});
+  place_on_ground(b, c, 0);
+  c.bodies.push_back(b);
+  return contact_scenario("contact_slope_stick", "a drawn box on a slope below its friction angle", c, 2.0);
+}
+
 scenario with_direction(const scenario& slide, double theta, double psi) {
   if (!slide.contact || slide.name != "contact_slide")
     throw domain_error("with_direction: " + slide.name + " is not contact_slide");

@@ -144,6 +144,10 @@ struct engine_integrator {
   /// A configuration of the engine's contact alone (a friction cone, a solver setting) that
   /// changes nothing without contact: the other studies skip it.
   bool contact_only = false;
+  /// A contact scenario as the file the engine itself loads (MuJoCo's MJCF), for a random
+  /// case's counterexample; without it the setup is written as JSON.
+  std::function<std::string(const scenario&)> contact_model;
+  std::string contact_model_extension;
   /// The adapter builds robot scenarios (body_structure::robot: trees of revolute and
   /// prismatic joints from a robots::robot, read back in its joint coordinates); without it
   /// they are refused before start is called.
