@@ -1,6 +1,8 @@
 #include "mechcheck/audit/adapters/dart_engine.hpp"
 #include "mechcheck/audit/adapters/detail/dart_robot.hpp"
+#include "mechcheck/audit/engines/contact.hpp"
 
+#include <dart/collision/fcl/FCLCollisionDetector.hpp>
 #include <dart/config.hpp>
 #include <dart/constraint/BallJointConstraint.hpp>
 #include <dart/constraint/ConstraintSolver.hpp>
@@ -13,16 +15,20 @@
 #include <dart/dynamics/EllipsoidShape.hpp>
 #include <dart/dynamics/FreeJoint.hpp>
 #include <dart/dynamics/RevoluteJoint.hpp>
+#include <dart/dynamics/ShapeNode.hpp>
+#include <dart/dynamics/WeldJoint.hpp>
 #include <dart/dynamics/Skeleton.hpp>
 #include <dart/dynamics/SphereShape.hpp>
 #include <dart/simulation/World.hpp>
 
 #include <cmath>
+#include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 
 namespace mechcheck::audit::dart_engine {
 
@@ -57,8 +63,19 @@ BodyNode* free_body(const SkeletonPtr& skel, double mass, const Eigen::Vector3d&
 
 class run final : public engine_run {
  public:
-  explicit run(const scenario& s) : s_(s) {
+  explicit run(const scenario& s, bool analytic = false) : s_(s) {
     world_ = dart::simulation::World::create("mechcheck");
+    if (analytic) {  // FCL's analytic checks for primitive shapes (FCLCollisionDetector::PRIMITIVE)
+      if (s.structure != body_structure::contact)
+        throw scenario_refused(std::string(analytic_name) + ": a collision setting changes nothing without contact: "
+                               "contact scenarios only");
+      auto detector = dart::collision::FCLCollisionDetector::create();
+      // Its warning on std::cerr at every call is quoted once in the origin instead.
+      std::streambuf* const err = std::cerr.rdbuf(nullptr);
+      detector->setPrimitiveShapeType(dart::collision::FCLCollisionDetector::PRIMITIVE);
+      std::cerr.rdbuf(err);
+      world_->getConstraintSolver()->setCollisionDetector(detector);
+    }
     world_->setGravity(Eigen::Vector3d(0, 0, -s.gravity));
     switch (s.structure) {
       case body_structure::one_body:
@@ -69,6 +86,9 @@ class run final : public engine_run {
         break;
       case body_structure::robot:
         build_robot(*s.robot);
+        break;
+      case body_structure::contact:
+        build_contact(*s.contact);
         break;
       case body_structure::free_bodies:
         for (const link& l : s.links) {
@@ -141,6 +161,7 @@ class run final : public engine_run {
   }
 
   static constexpr const char* name = "dart::World";
+  static constexpr const char* analytic_name = "dart::World/fcl_primitive";
 
  private:
   void build_one(const scenario& s) {
@@ -208,6 +229,53 @@ class run final : public engine_run {
     add(skel);
   }
 
+  /// A contact scenario (contact.hpp): a Skeleton per body on a FreeJoint with a ShapeNode
+  /// of its shape (BoxShape with the full edges, SphereShape, CylinderShape, whose axis,
+  /// DART's z, is turned onto the body's y), the ground an immobile Skeleton whose welded
+  /// body carries a 40 m x 40 m x 1 m BoxShape with its top face on the plane. DART combines
+  /// two shapes' friction by their minimum and their restitution by their product
+  /// (ContactConstraint.cpp), so every shape carries mu and sqrt(e) and every pair has mu
+  /// and e; the world's default collision detector and constraint solver.
+  void build_contact(const contact_setup& c) {
+    const auto surface = [&](ShapeNode* node) {
+      node->getDynamicsAspect()->setFrictionCoeff(c.mu);
+      node->getDynamicsAspect()->setRestitutionCoeff(std::sqrt(c.restitution));
+    };
+    if (c.ground) {
+      auto skel = Skeleton::create("ground");
+      auto [joint, body] = skel->createJointAndBodyNodePair<WeldJoint>();
+      Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+      t.linear() = Eigen::AngleAxisd(c.slope, Eigen::Vector3d::UnitY()).toRotationMatrix();
+      t.translation() = -0.5 * c.normal();
+      joint->setTransformFromParentBodyNode(t);
+      surface(body->createShapeNodeWith<CollisionAspect, DynamicsAspect>(
+          std::make_shared<BoxShape>(Eigen::Vector3d(40, 40, 1))));
+      skel->setMobile(false);
+      add(skel);
+    }
+    for (const contact_body& b : c.bodies) {
+      body_frame f;
+      f.rotation = b.rotation0;
+      f.position = b.position0;
+      f.velocity = b.velocity0;
+      f.omega = b.omega0;
+      auto skel = Skeleton::create("body" + std::to_string(bodies_.size()));
+      BodyNode* body = free_body(skel, b.mass, b.inertia, f);
+      ShapePtr shape;
+      switch (b.shape) {
+        case contact_shape::box: shape = std::make_shared<BoxShape>(Eigen::Vector3d(2 * b.size)); break;
+        case contact_shape::sphere: shape = std::make_shared<SphereShape>(b.size(0)); break;
+        case contact_shape::cylinder: shape = std::make_shared<CylinderShape>(b.size(0), 2 * b.size(1)); break;
+      }
+      ShapeNode* node = body->createShapeNodeWith<CollisionAspect, DynamicsAspect>(shape);
+      if (b.shape == contact_shape::cylinder)
+        node->setRelativeRotation(Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix());
+      surface(node);
+      bodies_.push_back(body);
+      add(skel);
+    }
+  }
+
   void add(const SkeletonPtr& skel) {
     world_->addSkeleton(skel);
     skeletons_.push_back(skel);
@@ -249,7 +317,34 @@ std::vector<engine_integrator> integrators() {
   e.multibody = true;
   e.robots = true;
   e.start = [](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s); };
-  return {e};
+  // The world's default collision detector, as a World reports it.
+  std::string detector;
+  {
+    const auto world = dart::simulation::World::create("probe");
+    const auto d = world->getConstraintSolver()->getCollisionDetector();
+    const auto* fcl = dynamic_cast<const dart::collision::FCLCollisionDetector*>(d.get());
+    detector = d->getType() + (fcl ? fcl->getPrimitiveShapeType() == dart::collision::FCLCollisionDetector::MESH
+                                         ? " with primitive shapes as meshes (MESH)"
+                                         : " with FCL's analytic primitive shapes (PRIMITIVE)"
+                                   : "");
+  }
+  contact_claims c;  // DART's headers name no friction cone, no restitution law, no softness
+  c.words = "DART " + version() + " ShapeFrame.hpp, DynamicsAspect: setFrictionCoeff \"Set both primary and secondary "
+            "friction coefficients to the same value\", RestitutionCoeff; ContactConstraint's defaults (ERP 0.01, CFM "
+            "1e-5); the boxed LCP solver; the world's default collision detector: " + detector +
+            " (FCLCollisionDetector.hpp, MESH: \"use approximate mesh shapes for the primitive shapes. The contact result "
+            "is probably less accurate than the analytic result\")";
+  e.contact = c;
+  engine_integrator a;
+  a.name = run::analytic_name;
+  a.origin = "DART " + version() + ", dart::World with an FCLCollisionDetector set to PRIMITIVE (FCLCollisionDetector.hpp: "
+             "\"Use FCL's analytic collision checking for primitive shapes\"; \"it still returns single contact point for a "
+             "shape pair except for box-box collision\"; its warning when set: \"It's recommended to use mesh even for "
+             "primitive shapes\"): the contact scenarios only";
+  a.start = [](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, true); };
+  a.contact = c;
+  a.contact_only = true;
+  return {e, a};
 }
 
 engine_shapes shapes() {
