@@ -42,7 +42,7 @@ vector3<T> horizontal(const T& theta) {
 
 /// int_a^b f by 20-point Gauss-Legendre quadrature (exact for the low-degree polynomials here).
 template <class T, class F>
-T integral(F f, const T& a, const T& b) {
+T gauss_integral(F f, const T& a, const T& b) {
   return boost::math::quadrature::gauss<T, 20>::integrate(f, a, b);
 }
 

@@ -9,7 +9,8 @@ struct sliding_box {
             "A box sliding flat on level ground under Coulomb friction stops after v0^2 / (2 mu g) at "
             "v0 / (mu g) whatever its direction, yaw, mass and size: the friction's work mu m g d (the "
             "distance by quadrature of the speed) is the kinetic energy lost, and its corner loads put the "
-            "centre of pressure on the line of motion, so the friction's moment about the vertical is zero",
+            "centre of pressure on the line of motion, mu c ahead of the centre of mass, so the friction's "
+            "moment about the vertical is zero and the box does not tip",
             {"65", "72"}};
   }
   // The stop's closed forms: a few operations on v0, mu, g (k = 16 on d and t); the
@@ -29,7 +30,7 @@ struct sliding_box {
     check_close("displacement at 2 t_stop (at rest) vs d", slide.displacement(T(2 * t_stop)).norm(), d, d, 16);
     check_zero("speed at the stop", slide.velocity(t_stop).norm(), v, 16);
     // The distance as the integral of the speed, and the work-energy theorem.
-    const T travelled = integral([&](const T& t) { return slide.velocity(t).norm(); }, T(0), t_stop);
+    const T travelled = gauss_integral([&](const T& t) { return slide.velocity(t).norm(); }, T(0), t_stop);
     check_close("int |v| dt vs v0^2 / (2 mu g)", travelled, d, d, 32);
     check_close("friction's work mu m g d vs m v0^2 / 2", T(mu * m * g * travelled), T(m * v * v / 2),
                 T(m * v * v / 2), 32);
@@ -50,6 +51,14 @@ struct sliding_box {
       check_close("friction force_" + std::to_string(i + 1) + " vs -mu m g u", loads.friction_force(i),
                   T(-mu * w * u(i)), w, 64);
     check_zero("friction's moment about the vertical", loads.yaw_moment, T(mu * w * (a + b)), 64);
+    // Nor does it tip: the corner forces' moment about the centre of mass has no horizontal
+    // part -- the loads' moment (the pressure centre mu c ahead of the centre, along u)
+    // cancels the friction's, mu m g c. Four terms of size m g (a + b + c) (k = 64).
+    vector3<T> tipping = vector3<T>::Zero();
+    for (std::size_t i = 0; i < 4; ++i)
+      tipping += loads.corners[i].cross(vector3<T>(loads.loads[i] * (vector3<T>(0, 0, 1) - mu * u)));
+    for (int i = 0; i < 2; ++i)
+      check_zero("tipping moment_" + std::to_string(i + 1) + " about the centre", tipping(i), T(w * (a + b + h)), 64);
     for (const T& n : loads.loads) RC_ASSERT(n >= 0);
   }
 };

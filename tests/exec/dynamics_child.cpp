@@ -80,7 +80,12 @@ int main(int argc, char** argv) {
         for (auto& l : robot.links)
           if (l.body) l.body->mass *= 1 + std::ldexp(1.0, -20);
         if (mode == "held_short") robot.joints.front().type = robots::joint_type::fixed;
-        reply["held"] = mechcheck::audit::to_urdf(robot);
+        // As a library other than mechcheck writes it: URDF without mechcheck's gravity
+        // comment (URDF has no gravity), so the robot held is under the gravity it was sent.
+        std::string urdf = mechcheck::audit::to_urdf(robot);
+        if (const auto at = urdf.find("<!-- mechcheck gravity="); at != std::string::npos)
+          urdf.erase(at, urdf.find("-->", at) + 3 - at);
+        reply["held"] = urdf;
       }
       models[r.at("model").get<long long>()] = std::make_unique<robots::robot_model<double>>(robot);
       send(reply);
