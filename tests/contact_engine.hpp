@@ -25,7 +25,7 @@
 namespace contact_test {
 namespace audit = mechcheck::audit;
 
-enum class variant { exact, pyramid, creep, restitution_twice, sinking };
+enum class variant { exact, pyramid, creep, restitution_twice, sinking, heavy };
 
 class exact_contact_run final : public audit::engine_run {
  public:
@@ -135,7 +135,8 @@ class exact_contact_run final : public audit::engine_run {
     const Eigen::Vector3d slip_t = slip - slip.dot(n) * n;
     const double inverse_mass = 1 / b.mass + (round ? r * r / moment : 0.0);
     Eigen::Vector3d j = -slip_t / inverse_mass;  // the impulse that stops the slip
-    const double limit = c_.mu * normal_load * h;
+    // The heavy variant's friction grows with the body's mass (Coulomb's does not).
+    const double limit = c_.mu * normal_load * h * (v_ == variant::heavy ? 1 + 0.1 * b.mass : 1.0);
     if (v_ == variant::pyramid) {
       for (int k = 0; k < 3; ++k) j(k) = std::clamp(j(k), -limit, limit);  // per world axis: the pyramid
     } else if (j.norm() > limit) {
@@ -192,6 +193,7 @@ inline audit::engine_integrator exact_contact_engine(variant v) {
             : v == variant::pyramid ? "/pyramid"
             : v == variant::creep   ? "/creep"
             : v == variant::sinking ? "/sinking"
+            : v == variant::heavy   ? "/heavy"
                                     : "/restitution_twice");
   e.origin = "the contact audit's test engine: Coulomb's isotropic cone, Newton restitution at impacts inside the step";
   audit::contact_claims c;

@@ -164,6 +164,13 @@ TEST(contact, random_cases_confirm_the_exact_engine_and_shrink_a_pyramid_and_a_c
   EXPECT_EQ(pyramid.cases->model_extension, "json");
   EXPECT_NE(pyramid.cases->model.find("\"scenario\": \"contact_slide\""), std::string::npos) << pyramid.cases->model;
 
+  // Friction growing with the mass: caught as a dependence on mass and size, its shrunk
+  // case at the yaw and direction of 0 (not an anisotropy).
+  const audit::contact_audit heavy = audit::audit_contact(exact_contact_engine(variant::heavy), opt);
+  ASSERT_TRUE(heavy.cases);
+  EXPECT_EQ(heavy.cases->property, "independence of mass and size") << heavy.cases->counterexample;
+  EXPECT_NE(heavy.cases->counterexample.find("theta 0 deg, psi 0 deg"), std::string::npos) << heavy.cases->counterexample;
+
   const audit::contact_audit creep = audit::audit_contact(exact_contact_engine(variant::creep), opt);
   ASSERT_TRUE(creep.cases);
   EXPECT_EQ(creep.cases->property, "no creep") << creep.cases->counterexample;
