@@ -331,7 +331,7 @@ std::vector<engine_integrator> integrators() {
   contact_claims c;  // DART's headers name no friction cone, no restitution law, no softness
   c.words = "DART " + version() + " ShapeFrame.hpp, DynamicsAspect: setFrictionCoeff \"Set both primary and secondary "
             "friction coefficients to the same value\", RestitutionCoeff; ContactConstraint's defaults (ERP 0.01, CFM "
-            "1e-5); the boxed LCP solver; the world's default collision detector: " + detector +
+            "1e-5; in its source, no bounce below an approach of 0.1 m/s); the boxed LCP solver; the world's default collision detector: " + detector +
             " (FCLCollisionDetector.hpp, MESH: \"use approximate mesh shapes for the primitive shapes. The contact result "
             "is probably less accurate than the analytic result\")";
   e.contact = c;
