@@ -199,6 +199,73 @@ TEST(robots, a_description_that_is_not_a_robot_is_refused_by_name) {
   refused(r, "link upper is its own parent");
 }
 
+TEST(robots, a_moving_joint_that_carries_no_mass_is_refused_by_name_and_a_massless_frame_is_not) {
+  // A link without <inertial> is massless (urdfdom's reading): refused where it leaves a
+  // moving joint with nothing to move (M's row and column zero), accepted elsewhere.
+  const rb::robot good = two_link_arm(2, 1.5, 1, 0.5, 0.375, 0.25, 0.0625);
+  rb::robot r = good;
+  r.links[2].body.reset();  // the forearm, a moving leaf, massless
+  try {
+    rb::validate(r);
+    ADD_FAILURE() << "a massless moving leaf was accepted";
+  } catch (const rb::robot_error& e) {
+    EXPECT_NE(std::string(e.what()).find("joint elbow moves link fore, which carries no mass, nor does any link below it"),
+              std::string::npos) << e.what();
+  }
+  r = good;
+  r.links[1].body.reset();  // the upper arm massless, the forearm below it not: M is regular
+  EXPECT_NO_THROW(rb::validate(r));
+  const rb::robot_model<double> m(r);
+  const Eigen::VectorXd q = Eigen::VectorXd::Zero(2);
+  EXPECT_GT(rb::mass_matrix(m, q).determinant(), 0);
+  r = good;
+  r.links.push_back({"tool", std::nullopt});  // a frame on a fixed joint
+  rb::joint tool;
+  tool.name = "tool_mount";
+  tool.type = rb::joint_type::fixed;
+  tool.parent = "fore";
+  tool.child = "tool";
+  r.joints.push_back(tool);
+  EXPECT_NO_THROW(rb::validate(r));
+  rb::joint moving = tool;  // the same frame on a moving joint: nothing to move
+  moving.type = rb::joint_type::continuous;
+  r.joints.back() = moving;
+  EXPECT_THROW(rb::validate(r), rb::robot_error);
+}
+
+TEST(robots, urdf_gives_an_axis_its_default_and_its_unit_length_and_says_so) {
+  const std::string head = "<robot name='r'><link name='a'/><link name='b'><inertial><mass value='1'/>"
+                           "<inertia ixx='1' ixy='0' ixz='0' iyy='1' iyz='0' izz='1'/></inertial></link>";
+  const auto joint = [&](const std::string& type, const std::string& axis) {
+    return head + "<joint name='j' type='" + type + "'><parent link='a'/><child link='b'/>" + axis + "</joint></robot>";
+  };
+  rb::robot r = audit::parse_urdf(joint("continuous", ""), "test.urdf");
+  EXPECT_EQ(r.joints[0].axis, Eigen::Vector3d(1, 0, 0));
+  ASSERT_EQ(r.readings.size(), 1u);
+  EXPECT_EQ(r.readings[0], "test.urdf: robot r: joint j: no axis given: URDF's default (1, 0, 0)");
+  r = audit::parse_urdf(joint("revolute", "<axis xyz='0 0 2'/>"), "test.urdf");
+  EXPECT_EQ(r.joints[0].axis, Eigen::Vector3d(0, 0, 1));
+  ASSERT_EQ(r.readings.size(), 1u);
+  EXPECT_NE(r.readings[0].find("joint j: axis \"0 0 2\" (length 1 + 1) normalized to (0, 0, 1)"), std::string::npos)
+      << r.readings[0];
+  r = audit::parse_urdf(joint("continuous", "<axis xyz='0 0.7071 0.7071'/>"), "test.urdf");
+  EXPECT_LE(std::abs(r.joints[0].axis.norm() - 1), 2 * 0x1p-52);
+  ASSERT_EQ(r.readings.size(), 1u);
+  EXPECT_NE(r.readings[0].find("(length 1 - 9.59"), std::string::npos) << r.readings[0];
+  // A unit axis as written, and a fixed joint's axis (unused): kept, nothing said.
+  r = audit::parse_urdf(joint("continuous", "<axis xyz='0 0.6 0.8'/>"), "test.urdf");
+  EXPECT_EQ(r.joints[0].axis, Eigen::Vector3d(0, 0.6, 0.8));
+  EXPECT_TRUE(r.readings.empty());
+  r = audit::parse_urdf(joint("fixed", "<axis xyz='0 0 0'/>"), "test.urdf");
+  EXPECT_TRUE(r.readings.empty());
+  try {
+    audit::parse_urdf(joint("continuous", "<axis xyz='0 0 0'/>"), "test.urdf");
+    ADD_FAILURE() << "a zero axis was accepted";
+  } catch (const rb::robot_error& e) {
+    EXPECT_NE(std::string(e.what()).find("joint j: axis \"0 0 0\" has no direction"), std::string::npos) << e.what();
+  }
+}
+
 TEST(robots, urdf_round_trips_every_number_and_refuses_what_is_not_urdf) {
   EXPECT_EQ(seeded_check(100, [] {
     const rb::robot r = *generators::random_robots(8);
@@ -592,6 +659,21 @@ TEST(dynamics_audit, a_users_robot_with_fixed_joints_gets_one_coordinate_per_mov
     EXPECT_EQ(f.checked, 5) << audit::dynamics_quantity_name(f.quantity);
     EXPECT_EQ(audit::dynamics_verdict(c, f), "within");
   }
+}
+
+TEST(dynamics_audit, a_disagreement_on_a_users_robot_prints_a_command_that_runs_with_its_file) {
+  // The command's --urdf campaign: the reproduction names the file as given (quoted for the
+  // shell), not a placeholder, and the seed the campaign ran with, once.
+  const rb::robot r = chain({1.0, 0.5});
+  audit::dynamics_options opt;
+  opt.robots = 3;
+  opt.seed = 7;
+  opt.urdf_file = "my arm.urdf";
+  const audit::dynamics_campaign c =
+      audit::run_dynamics_on(wrong_library([](rb::robot& x) { x.links.back().body->mass *= 2; }), r, opt);
+  ASSERT_FALSE(c.disagreement.empty());
+  EXPECT_NE(c.disagreement.find("(mechcheck-audit --urdf 'my arm.urdf' --robots 3 --seed 7 --dynamics wrong finds"),
+            std::string::npos) << c.disagreement;
 }
 
 TEST(dynamics_audit, a_campaign_that_stopped_never_clears_the_quantities_it_did_not_finish) {

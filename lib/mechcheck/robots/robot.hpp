@@ -77,6 +77,9 @@ struct robot {
   std::vector<link> links;
   std::vector<joint> joints;
   Eigen::Vector3d gravity{0, 0, -9.81};  ///< uniform gravitational acceleration, world frame (m/s^2)
+  /// What a reader took where the file was silent or inexact (a joint without <axis> given
+  /// URDF's default, an axis normalized), one sentence each, for the report.
+  std::vector<std::string> readings;
 };
 
 /// A validated robot's tree: its root link (fixed to the world at the world's frame), the
@@ -109,8 +112,9 @@ inline void require_finite_pose(const pose& p, const std::string& where) {
 /// link, a link with two parents, a loop, more than one root; a moving link's mass <= 0;
 /// an inertia tensor that is not symmetric, not positive semi-definite or violates the
 /// triangle inequality I1 + I2 >= I3 (notes eqs 154-156; tolerance 64 eps |I|); an axis
-/// that is zero or not of unit length (to 1e-9, URDF writes axes to a few digits); and
-/// non_finite_error for a number that is not finite.
+/// that is zero or not of unit length (to 1e-9, URDF writes axes to a few digits); a
+/// moving joint whose child and everything below it are massless (no inertial: its
+/// coordinate has no inertia); and non_finite_error for a number that is not finite.
 inline tree validate(const robot& r) {
   const std::string who = "robot " + r.name;
   if (r.links.empty()) throw robot_error(who + ": no links");
@@ -199,6 +203,19 @@ inline tree validate(const robot& r) {
       throw robot_error(e.what());
     }
   }
+  // A link without <inertial> is massless, as urdfdom reads it: a frame, fine on a fixed
+  // joint or with mass below it; a moving joint that carries no mass at all makes the mass
+  // matrix singular (its row and column are zero), refused here, before any library runs.
+  std::vector<double> subtree_mass(nl, 0);
+  for (std::size_t i = 0; i < nl; ++i)
+    if (r.links[i].body) subtree_mass[i] = r.links[i].body->mass;
+  for (auto j = t.order.rbegin(); j != t.order.rend(); ++j)
+    subtree_mass[std::size_t(t.parent_link[std::size_t(*j)])] += subtree_mass[std::size_t(t.child_link[std::size_t(*j)])];
+  for (std::size_t j = 0; j < nj; ++j)
+    if (t.coordinate[j] >= 0 && !(subtree_mass[std::size_t(t.child_link[j])] > 0))
+      throw robot_error(who + ": joint " + r.joints[j].name + " moves link " + r.joints[j].child +
+                        ", which carries no mass, nor does any link below it (no <inertial>): the mass matrix is "
+                        "singular in its coordinate");
   return t;
 }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -177,9 +178,25 @@ robots::robot parse_urdf(const std::string& document, const std::string& origin)
       *target = link;
     }
     j.origin = pose_of(e, what);
-    if (const tinyxml2::XMLElement* a = e->FirstChildElement("axis")) {
-      known(a, {}, {"xyz"}, what + " axis");
-      if (const char* xyz = a->Attribute("xyz")) j.axis = triple(xyz, what + " axis");
+    // URDF's default axis where <axis> (or its xyz) is absent; an axis not of unit length
+    // (written to a few digits) normalized, as MuJoCo's compiler does (urdfdom keeps it as written). Both said in the robot's readings, which the report prints.
+    const tinyxml2::XMLElement* a = e->FirstChildElement("axis");
+    if (a) known(a, {}, {"xyz"}, what + " axis");
+    const char* xyz = a ? a->Attribute("xyz") : nullptr;
+    if (xyz) j.axis = triple(xyz, what + " axis");
+    if (xyz && j.type != robots::joint_type::fixed) {
+      const double n = j.axis.norm();
+      if (!(n > 0)) throw robot_error(what + ": axis \"" + std::string(xyz) + "\" has no direction");
+      // Unit to its rounding (a unit vector's computed length is within a few eps of 1):
+      // kept as written, so that a file's doubles come back as they were written.
+      if (std::abs(n - 1) > 8 * 0x1p-52) {
+        j.axis /= n;
+        r.readings.push_back(what + ": axis \"" + std::string(xyz) + "\" (length 1 " +
+                               (n > 1 ? "+ " : "- ") + to_text(std::abs(n - 1)) + ") normalized to " +
+                               robots::detail::vector_text(j.axis));
+      }
+    } else if (j.type != robots::joint_type::fixed) {
+      r.readings.push_back(what + ": no axis given: URDF's default (1, 0, 0)");
     }
     r.joints.push_back(std::move(j));
   }
