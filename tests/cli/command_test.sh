@@ -2,11 +2,12 @@
 # The command's behaviour towards a newcomer (ctest: cli.command): names are checked and the
 # valid ones listed, the report goes where -o says, a batch goes on past a bad input and the
 # exit status says so, --list lists every kind, --help names the installed tableaus.
-# Usage: command_test.sh MECHCHECK_AUDIT SOURCE_DIR EXEC_CHILD
+# Usage: command_test.sh MECHCHECK_AUDIT SOURCE_DIR EXEC_CHILD EXEC_DYNAMICS_CHILD
 set -uo pipefail
 audit=$1
 source_dir=$2
 child=$3
+dynamics_child=$4
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failed=0
@@ -90,6 +91,23 @@ expect 0 "on arm .*forward dynamics .* within" --dynamics '*' --urdf "$source_di
   -o "$work/d"
 printf '<robot name="r"><link name="a"/><joint name="j" type="floating"/></robot>' > "$work/bad.urdf"
 expect 1 "bad.urdf: robot r: joint j: type floating is not modelled" --dynamics '*' --urdf "$work/bad.urdf" -o "$work/d"
+# A user's file as ROS reads it: a moving joint that carries no mass is refused by name
+# before any library runs; a joint without <axis> takes URDF's default, and the report says so.
+printf '<robot name="r"><link name="a"/><link name="b"/><joint name="j" type="continuous"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/></joint></robot>' > "$work/massless.urdf"
+expect 1 "massless.urdf: robot r: joint j moves link b, which carries no mass" --dynamics '*' --urdf "$work/massless.urdf" -o "$work/d"
+inertial='<inertial><mass value="1"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.2" iyz="0" izz="0.25"/></inertial>'
+printf '<robot name="r"><link name="a"/><link name="b">%s</link><link name="c">%s</link><link name="d">%s</link>
+<joint name="j" type="continuous"><parent link="a"/><child link="b"/><origin xyz="0 0 0.5"/></joint>
+<joint name="k" type="continuous"><parent link="b"/><child link="c"/><origin xyz="0.5 0 0"/><axis xyz="0 1 0"/></joint>
+<joint name="l" type="continuous"><parent link="b"/><child link="d"/><origin xyz="0 0.5 0"/><axis xyz="0 0 1"/></joint>
+</robot>' "$inertial" "$inertial" "$inertial" > "$work/tree.urdf"
+expect 0 "reading: .*tree.urdf: robot r: joint j: no axis given: URDF's default \(1, 0, 0\)" --dynamics '*' \
+  --urdf "$work/tree.urdf" --robots 5 -q -o "$work/d"
+grep -q "Reading: .*joint j: no axis given" "$work/d/dynamics.md" ||
+  { echo "FAILED: dynamics.md does not say the default axis it took"; failed=1; }
+# --require on a library that checked nothing (it refused every state of the robot) fails.
+expect 2 "checked nothing \(it refused 5 of 5 states; the first: .*a tree" --urdf "$work/tree.urdf" --robots 5 -q \
+  --require 'exec::*' -o "$work/d" --exec-dynamics -- "$dynamics_child" refuse_trees
 # --list names every kind; --help names the tableaus.
 for section in "steppers \([0-9]+;" "adaptive drivers \([0-9]+;" "engine integrators \([0-9]+;" \
                "engine scenarios \(25;" "problems \([0-9]+;" "dynamics libraries \([0-9]+;"; do

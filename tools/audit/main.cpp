@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -22,6 +23,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <rapidcheck/detail/Configuration.h>
 
 #include "families.hpp"
 #include "mechcheck/audit/adapters/exec.hpp"
@@ -123,7 +125,24 @@ bool every_pattern_matches(const char* option, const char* what, const std::vect
 }
 }  // namespace
 
+namespace {
+/// RapidCheck loads its configuration at the first check: from RC_PARAMS (a malformed one
+/// exits the process; a "reproduce" one would replay its own case in every campaign), and
+/// it prints "Using configuration: seed=<random>" that no campaign uses. The command's
+/// campaigns take their seeds from --seed alone: loaded here, from nothing, silently.
+void load_rapidcheck_quietly() {
+  struct null_buffer : std::streambuf {
+    int overflow(int c) override { return c; }
+  } none;
+  ::unsetenv("RC_PARAMS");
+  std::streambuf* const saved = std::cerr.rdbuf(&none);
+  rc::detail::configuration();
+  std::cerr.rdbuf(saved);
+}
+}  // namespace
+
 int main(int argc, char** argv) {
+  load_rapidcheck_quietly();
   // Everything after "--" is a child's command (--exec-*), passed as given.
   std::vector<std::string> child_command;
   for (int i = 1; i < argc; ++i)
@@ -144,7 +163,7 @@ int main(int argc, char** argv) {
              "2 a claim --require names is contradicted (a stepper's or engine integrator's measured claim, or "
              "a tableau file's algebraic one: " + tableau_claim_names + "; a declared \"no\" states that the "
              "property is absent, and is contradicted where it holds), or a "
-             "dynamics library's quantity disagrees with the Lagrangian; "
+             "dynamics library's quantity disagrees with the Lagrangian or the library checked nothing; "
              "2 also when a target --require-measured names measured nothing of a problem or scenario it was "
              "audited on (refused, skipped, or every run failed); "
              "3 a child failed during the audit.\n"
@@ -185,7 +204,7 @@ int main(int argc, char** argv) {
                  "exit with status 2 when a claim of a stepper or engine integrator matching this pattern is "
                  "contradicted, a tableau file's algebraic claims included (tableau::<name>: " + tableau_claim_names +
                      "; e.g. 'mechcheck::*'; '*' for all), or when a dynamics library matching it disagrees with the "
-                     "Lagrangian");
+                     "Lagrangian or checks nothing (every robot refused)");
   app.add_option("--require-measured", require_measured,
                  "exit with status 2 when a stepper, adaptive driver or engine integrator matching this pattern "
                  "measured nothing of a problem or scenario it was audited on (it refused or skipped it, or every "
@@ -485,7 +504,9 @@ int main(int argc, char** argv) {
     std::vector<audit::dynamics_campaign> campaigns;
     for (const auto& l : libraries) {
       if (own.empty()) campaigns.push_back(audit::run_dynamics_campaign(l, dopt));
-      for (const auto& r : own) {
+      for (std::size_t k = 0; k < own.size(); ++k) {
+        const robots::robot& r = own[k];
+        dopt.urdf_file = urdf_files[k];
         campaigns.push_back(audit::run_dynamics_on(l, r, dopt));
         campaigns.back().library = l.name + " on " + r.name;
       }
@@ -495,6 +516,16 @@ int main(int argc, char** argv) {
     for (const auto& c : campaigns)
       if (!c.agrees() && audit_tool::matches_any(require, c.library)) {
         std::cerr << "mechcheck-audit: " << c.library << ": a quantity disagrees with the Lagrangian (see the table)\n";
+        raise(2);
+      }
+    // A gate that cannot pass on nothing: a required library that checked no quantity.
+    for (const auto& c : campaigns)
+      if (c.agrees() && !c.checked_any() && audit_tool::matches_any(require, c.library)) {
+        std::cerr << "mechcheck-audit: " << c.library << ": checked nothing ("
+                  << (c.refused ? "it refused " + std::to_string(c.refused) + " of " + std::to_string(c.robots) +
+                                      " " + c.unit + "; the first: " + c.first_refusal
+                                : std::string("it offers none of the quantities"))
+                  << ")\n";
         raise(2);
       }
     for (const auto& t : exec_libraries)

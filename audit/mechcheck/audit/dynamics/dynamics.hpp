@@ -17,6 +17,7 @@
 /// and 3-term dot products (about 16 roundings of the scale). A residual above the budget is
 /// a disagreement; its robot is printed as URDF with its state.
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <ostream>
@@ -185,6 +186,11 @@ struct dynamics_campaign {
   std::string disagreement;  ///< "" when every quantity stayed within its budget
   std::string counterexample_urdf;
   std::string note;          ///< a library's failure (an error, a non-finite value), if any
+  std::vector<std::string> readings;  ///< a user's robot: what its file left unsaid (robots::robot::readings)
+  /// Whether any quantity was checked on any robot (false: refused, or nothing offered).
+  bool checked_any() const {
+    return std::any_of(figures.begin(), figures.end(), [](const quantity_figure& f) { return f.checked > 0; });
+  }
   bool agrees() const { return disagreement.empty() && note.empty(); }
   /// The campaign stopped before the robots asked for: at its first disagreement or failure.
   bool stopped() const { return !agrees(); }
@@ -195,6 +201,7 @@ struct dynamics_options {
   std::uint64_t seed = 1;
   int max_links = 8;
   std::function<void(const std::string&)> progress;
+  std::string urdf_file;  ///< a user's robot: its file, for the reproduction command
 };
 
 dynamics_campaign run_dynamics_campaign(const dynamics_library& library, const dynamics_options& options);

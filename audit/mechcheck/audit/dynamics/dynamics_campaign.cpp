@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <rapidcheck.h>
 
+#include "mechcheck/audit/adapters/exec.hpp"
 #include "mechcheck/audit/dynamics/dynamics.hpp"
 #include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/audit/report.hpp"
@@ -101,7 +102,8 @@ dynamics_campaign campaign(const std::string& name, const std::string& origin, c
           << "\n  seed " << opt.seed << ", "
           << (user ? std::to_string(opt.robots) + " states of robot " + user->name
                    : std::to_string(opt.robots) + " robots of at most " + std::to_string(opt.max_links) + " links")
-          << " (mechcheck-audit " << (user ? "--urdf <its URDF> " : "") << "--robots " << opt.robots << " --seed "
+          << " (mechcheck-audit "
+          << (!user ? std::string() : "--urdf " + (opt.urdf_file.empty() ? std::string("<its URDF>") : command_text({opt.urdf_file})) + " ") << "--robots " << opt.robots << " --seed "
           << opt.seed << " " << (selector.empty() ? "--dynamics " + name : selector) << " finds and shrinks it again)";
         c.disagreement = s.str();
         c.counterexample_urdf = to_urdf(rc.robot);
@@ -143,6 +145,7 @@ dynamics_campaign run_dynamics_checker(const std::string& name, const std::strin
     return rc;
   }, selector, robot);
   c.max_links = t.dofs;
+  c.readings = robot->readings;
   return c;
 }
 
@@ -189,6 +192,17 @@ std::string verdict_of(const dynamics_campaign& c, const dynamics_campaign::quan
 }
 }  // namespace
 
+namespace {
+/// The readings of the campaigns' robots, each once (every library runs the same files).
+std::vector<std::string> readings_of(const std::vector<dynamics_campaign>& campaigns) {
+  std::vector<std::string> all;
+  for (const auto& c : campaigns)
+    for (const auto& r : c.readings)
+      if (std::find(all.begin(), all.end(), r) == all.end()) all.push_back(r);
+  return all;
+}
+}  // namespace
+
 void print_dynamics(std::ostream& out, const std::vector<dynamics_campaign>& campaigns) {
   char line[512];
   int width = 7;  // the library column: its longest name
@@ -217,6 +231,7 @@ void print_dynamics(std::ostream& out, const std::vector<dynamics_campaign>& cam
     if (!c.note.empty()) out << "  " << c.library << " failed: " << c.note << "\n";
     if (!c.disagreement.empty()) out << "  " << c.library << ", shrunk: " << c.disagreement << "\n";
   }
+  for (const auto& r : readings_of(campaigns)) out << "  reading: " << r << "\n";
 }
 
 std::vector<std::string> write_dynamics_report(const std::string& directory, const std::vector<dynamics_campaign>& campaigns) {
@@ -259,6 +274,7 @@ std::vector<std::string> write_dynamics_report(const std::string& directory, con
       md << "| " << c.library << " | held robot (its M against the given robot's) | " << c.model_checked << " | "
          << sci(c.model_largest) << " | - | measured |\n";
     }
+    if (!c.readings.empty()) e["readings"] = c.readings;
     if (!c.note.empty()) e["failure"] = c.note;
     if (!c.disagreement.empty()) e["disagreement"] = c.disagreement;
     if (!c.counterexample_urdf.empty()) {
@@ -277,6 +293,7 @@ std::vector<std::string> write_dynamics_report(const std::string& directory, con
       md << "\n" << c.library << " computes with the robot as it holds it (the residuals are against that robot's "
          << "Lagrangian); its exact mass matrix differs from the given robot's by up to " << sci(c.model_largest)
          << " eps of the scale (the robot where it is largest: the file held_robot.robot of dynamics.json).\n";
+  for (const auto& r : readings_of(campaigns)) md << "\nReading: " << r << ".\n";
   md << after.str();
   // Per quantity, each library's largest residual against the robots' moving joints, and
   // the budget 16 n.
