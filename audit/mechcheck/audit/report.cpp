@@ -276,6 +276,14 @@ std::string cell(const std::string& s) {
 
 std::string outcome_name(verdict::outcome o) { return outcome_text(o); }
 
+std::string shell_word(const std::string& s) {
+  const bool plain = !s.empty() && s.find_first_of(" \t\n'\"\\$`*?;&|<>()") == std::string::npos;
+  if (plain) return s;
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
 std::string clip_line(const std::string& text, std::size_t cap, bool& cut) {
   std::string t = text.substr(0, text.find('\n'));
   if (cap >= 4 && t.size() > cap) t = t.substr(0, cap - 3) + "...";

@@ -37,6 +37,10 @@ std::vector<std::string> format_columns(std::vector<std::vector<std::string>> ro
 /// ending in "..."); sets `cut` when anything was left out.
 std::string clip_line(const std::string& text, std::size_t cap, bool& cut);
 
+/// A word as a POSIX shell reads it back: as is when plain, else in single quotes (a quote
+/// inside as '\''), for the commands the reports print.
+std::string shell_word(const std::string& s);
+
 /// A verdict as the text of a JSON object: claim, declared, measured, result, evidence and,
 /// where it has them, needs and readings (the drivers' and engines' reports use it too).
 std::string verdict_json_text(const verdict& v);

@@ -9,7 +9,6 @@
 #include <nlohmann/json.hpp>
 #include <rapidcheck.h>
 
-#include "mechcheck/audit/adapters/exec.hpp"
 #include "mechcheck/audit/dynamics/dynamics.hpp"
 #include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/audit/report.hpp"
@@ -103,7 +102,7 @@ dynamics_campaign campaign(const std::string& name, const std::string& origin, c
           << (user ? std::to_string(opt.robots) + " states of robot " + user->name
                    : std::to_string(opt.robots) + " robots of at most " + std::to_string(opt.max_links) + " links")
           << " (mechcheck-audit "
-          << (!user ? std::string() : "--urdf " + (opt.urdf_file.empty() ? std::string("<its URDF>") : command_text({opt.urdf_file})) + " ") << "--robots " << opt.robots << " --seed "
+          << (!user ? std::string() : "--urdf " + (opt.urdf_file.empty() ? std::string("<its URDF>") : shell_word(opt.urdf_file)) + " ") << "--robots " << opt.robots << " --seed "
           << opt.seed << " " << (selector.empty() ? "--dynamics " + name : selector) << " finds and shrinks it again)";
         c.disagreement = s.str();
         c.counterexample_urdf = to_urdf(rc.robot);

@@ -2,6 +2,7 @@
 // lines, the standard error's tail, the group killed at the end; the session and its
 // exchanges.
 #include "mechcheck/audit/adapters/detail/exec_child.hpp"
+#include "mechcheck/audit/report.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -23,14 +24,6 @@ namespace mechcheck::audit {
 namespace exec_detail {
 namespace {
 constexpr std::size_t stderr_kept = 2000;  // bytes of the child's standard error kept for messages
-
-std::string quoted(const std::string& s) {
-  const bool plain = !s.empty() && s.find_first_of(" \t\n'\"\\$`*?;&|<>()") == std::string::npos;
-  if (plain) return s;
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
 
 std::string signal_text(int sig) {
   const char* name = sigdescr_np(sig);
@@ -290,7 +283,7 @@ std::string served_by(const std::string& origin, const std::vector<std::string>&
 
 std::string command_text(const std::vector<std::string>& command) {
   std::string out;
-  for (const auto& a : command) out += (out.empty() ? "" : " ") + exec_detail::quoted(a);
+  for (const auto& a : command) out += (out.empty() ? "" : " ") + shell_word(a);
   return out;
 }
 
