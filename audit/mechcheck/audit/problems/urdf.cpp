@@ -179,7 +179,8 @@ robots::robot parse_urdf(const std::string& document, const std::string& origin)
     }
     j.origin = pose_of(e, what);
     // URDF's default axis where <axis> (or its xyz) is absent; an axis not of unit length
-    // (written to a few digits) normalized, as MuJoCo's compiler does (urdfdom keeps it as written). Both said in the robot's readings, which the report prints.
+    // (written to a few digits) normalized, as MuJoCo's compiler does (urdfdom keeps it as
+    // written). Both said in the robot's readings, which the report prints.
     const tinyxml2::XMLElement* a = e->FirstChildElement("axis");
     if (a) known(a, {}, {"xyz"}, what + " axis");
     const char* xyz = a ? a->Attribute("xyz") : nullptr;
