@@ -163,4 +163,35 @@ TEST(engines, a_pendulums_energy_error_is_relative_to_the_energy_it_exchanges) {
   EXPECT_LT(k.scenarios.at(0).energy_max, 0.05);
 }
 
+TEST(engines, a_rounding_budget_of_order_one_claims_neither_preservation_nor_a_growth_class) {
+  // Symplectic Euler's bounded energy on the small pendulum, audited as an engine in single
+  // precision (u = 2^-23) over 10^5 steps: the energy's terms are |E0| + the exchange =
+  // 1 / (1 - cos 0.1) = 200.3 times the energy exchanged, so the rounding budget is
+  // 64 u sqrt(10^5) 200.3 = 0.483 -- of order one. An error of 0.03 under it is neither
+  // "preserved to rounding" nor "bounded": not resolvable, with the budget named.
+  audit::engine_options opt;
+  opt.scenarios = {"pendulum_small"};
+  opt.long_run_steps = 100000;
+  opt.max_study_steps = 64;
+  opt.timing = false;
+  auto k = reference_engine("reference::SymplecticEuler", method::symplectic_euler, 1, 1);
+  k.epsilon = std::numeric_limits<float>::epsilon();
+  k.declared.energy = audit::energy_behaviour::bounded;
+  const auto a = audit::audit_engine(k, opt);
+  const auto& s = a.scenarios.at(0);
+  ASSERT_TRUE(s.long_run_failure.empty()) << s.long_run_failure;
+  const double magnification = 1 / (1 - std::cos(0.1));
+  EXPECT_NEAR(s.energy_budget, 64 * 0x1p-23 * std::sqrt(1e5) * magnification, 1e-12);
+  EXPECT_LT(s.energy_max, 0.05);
+  EXPECT_EQ(s.energy_class.rfind("not resolvable: the rounding budget 4.83e-01 (the energy's terms 2.00e+02", 0), 0u)
+      << s.energy_class;
+  EXPECT_EQ(a.energy.result, outcome::not_resolvable) << a.energy.evidence;
+  // The verdict quotes the budget that decided, the magnified one.
+  const std::string quoted = "(max " + audit::detail::sci(s.energy_max) + ", rounding budget 4.83e-01); ";
+  EXPECT_NE(a.energy.evidence.find(quoted), std::string::npos) << a.energy.evidence;
+  // In double the same run is resolved: bounded.
+  k.epsilon = std::numeric_limits<double>::epsilon();
+  EXPECT_EQ(audit::audit_engine(k, opt).scenarios.at(0).energy_class, "bounded");
+}
+
 }  // namespace engines_test

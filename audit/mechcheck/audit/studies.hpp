@@ -354,8 +354,9 @@ inline std::string growth_kind(double g) {
 ///  - "preserved to rounding" -- its largest error within the run's rounding budget;
 ///  - otherwise the growth class of its windows (classify_growth).
 inline constexpr const char* lost_class = "lost: not conserved (error of order one)";
+inline constexpr double invariant_lost_at = 0.25;
 inline std::string invariant_class(double max_relative, bool preserved, const std::string& growth) {
-  if (!(max_relative < 0.25)) return lost_class;
+  if (!(max_relative < invariant_lost_at)) return lost_class;
   if (preserved) return "preserved to rounding";
   return growth;
 }

@@ -180,6 +180,9 @@ struct engine_scenario_audit {
   /// scenario's time scales, a plateau over the last decade bounded).
   std::string energy_class, momentum_class;
   double energy_max = 0, momentum_max = 0;               ///< largest relative errors
+  /// Their rounding budgets over the long run (engine_rounding_budget, the energy's
+  /// magnified by its terms' ratio to the energy exchanged).
+  double energy_budget = 0, momentum_budget = 0;
   std::string long_run_failure;
   long long long_run_steps = 0;
   /// RMS relative errors of the long run per window of steps [2^w, 2^(w+1)): (time, rms).

@@ -159,6 +159,8 @@ std::string engines_to_json(const std::vector<engine_audit>& audits, const std::
       if (!s.momentum_class.empty()) js["momentum_class"] = s.momentum_class;
       js["energy_max"] = s.energy_max;
       js["momentum_max"] = s.momentum_max;
+      js["energy_budget"] = s.energy_budget;
+      js["momentum_budget"] = s.momentum_budget;
       js["long_run_steps"] = s.long_run_steps;
       js["seconds_per_step"] = s.seconds_per_step;
       if (s.constraint_first) js["constraint_first_step"] = violation(*s.constraint_first);
