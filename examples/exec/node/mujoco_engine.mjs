@@ -164,6 +164,20 @@ class Run {
     }
     mj.mj_forward(this.m, d);
     this.steps = 0;
+    // A model with no geom, equality, tendon, actuator, flex, joint range (a joint without one
+    // has no limit: the compiler's autolimits; 3.14.0's bindings cannot read jnt_limited, a
+    // bool array) or friction loss has
+    // no contact, constraint or control for MuJoCo to warn about: its only warnings are
+    // mj_step's bad position, velocity and acceleration, each raised after mj_resetData (the
+    // default autoreset) has set the time back to 0. For it, the warnings (an embind copy per
+    // warning) are read after a step only when the time did not advance by the step; for any
+    // other model, and for the corrected RK4 (mj_forward, which checks nothing, and its own
+    // time), after every step.
+    const m = this.m;
+    this.onlyResetWarnings = !this.dexp && m.ngeom === 0 && m.neq === 0 && m.ntendon === 0 && m.nu === 0 && m.nflex === 0 &&
+      Array.from(m.jnt_range).every((v) => v === 0) && Array.from(m.dof_frictionloss).every((v) => v === 0) &&
+      (m.opt.disableflags & enumValue(mj.mjtDisableBit.mjDSBL_AUTORESET)) === 0;
+    this.timestep = undefined;
     if (s.loop)
       this.modelDiffers =
         'MuJoCo closes the loop with a soft equality constraint (connect, default solref 0.02 1: a time constant ' +
@@ -197,10 +211,17 @@ class Run {
 
   step(h) {
     ++this.steps;
-    this.m.opt.timestep = h;
+    if (h !== this.timestep) this.m.opt.timestep = this.timestep = h;
     if (this.forced) this.applyForces();
+    const before = this.d.time;
     if (this.dexp) rk4DexpCorrected(this.m, this.d, h);
     else mj.mj_step(this.m, this.d);
+    if (!this.onlyResetWarnings || before < h || this.d.time - before < h / 2) this.checkWarnings();
+    for (let i = 0; i < this.m.nq; ++i)
+      if (!Number.isFinite(this.d.qpos[i])) throw new Error(`${this.name}: step ${this.steps}: qpos[${i}] is not finite`);
+  }
+
+  checkWarnings() {
     const warnings = this.d.warning;
     for (let i = 0; i < warnings.size(); ++i) {
       const w = warnings.get(i);
@@ -208,8 +229,6 @@ class Run {
       w.delete?.();
       if (count > 0) throw new Error(`${this.name}: step ${this.steps}: MuJoCo warning ${i}`);
     }
-    for (let i = 0; i < this.m.nq; ++i)
-      if (!Number.isFinite(this.d.qpos[i])) throw new Error(`${this.name}: step ${this.steps}: qpos[${i}] is not finite`);
   }
 
   reading() {
