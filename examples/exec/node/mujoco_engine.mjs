@@ -166,13 +166,12 @@ class Run {
     this.steps = 0;
     // A model with no geom, equality, tendon, actuator, flex, joint range (a joint without one
     // has no limit: the compiler's autolimits; 3.14.0's bindings cannot read jnt_limited, a
-    // bool array) or friction loss has
-    // no contact, constraint or control for MuJoCo to warn about: its only warnings are
-    // mj_step's bad position, velocity and acceleration, each raised after mj_resetData (the
-    // default autoreset) has set the time back to 0. For it, the warnings (an embind copy per
-    // warning) are read after a step only when the time did not advance by the step; for any
-    // other model, and for the corrected RK4 (mj_forward, which checks nothing, and its own
-    // time), after every step.
+    // bool array) or friction loss has no contact, constraint or control for MuJoCo to warn
+    // about: its only warnings are mj_step's bad position, velocity and acceleration, each
+    // raised after mj_resetData (the default autoreset) has set the time back to 0. For it, the
+    // warnings (an embind copy per warning) are read after a step only when the time did not
+    // advance by the step; for any other model, and for the corrected RK4 (mj_forward, which
+    // checks nothing, and its own time), after every step.
     const m = this.m;
     this.onlyResetWarnings = !this.dexp && m.ngeom === 0 && m.neq === 0 && m.ntendon === 0 && m.nu === 0 && m.nflex === 0 &&
       Array.from(m.jnt_range).every((v) => v === 0) && Array.from(m.dof_frictionloss).every((v) => v === 0) &&
