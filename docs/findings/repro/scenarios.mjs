@@ -465,10 +465,6 @@ function studyOf(name, s) {
   };
 }
 
-/** A scenario's order study (studyOf; none for the others): n = steps0, 2 steps0, .. 16384 steps of tEnd / n from its
- * start in a new world each (makeWorld(h) gives {step(), frames()}, or a promise of it), each class's error at tEnd
- * relative to the scale, printed as lines "<prefix>_<class>_error_n<n>"; and the reference's change from h = 2e-4
- * to 1e-4 ("<prefix>_reference_change"). */
 // The references of the order studies, computed once per scenario and step (a reproducer studies each scenario at
 // several settings or integrators; the references are the same numbers each time).
 const references = new WeakMap();
@@ -479,6 +475,10 @@ function reference(name, s, study, h) {
   return known.get(key);
 }
 
+/** A scenario's order study (studyOf; none for the others): n = steps0, 2 steps0, .. 16384 steps of tEnd / n from its
+ * start in a new world each (makeWorld(h) gives {step(), frames()}, or a promise of it), each class's error at tEnd
+ * relative to the scale, printed as lines "<prefix>_<class>_error_n<n>"; and the reference's change from h = 2e-4
+ * to 1e-4 ("<prefix>_reference_change"). */
 export async function orderStudy(prefix, name, s, makeWorld) {
   const study = studyOf(name, s);
   if (!study) return;
