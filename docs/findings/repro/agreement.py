@@ -106,6 +106,33 @@ def horizon(driver, multiple):
     raise KeyError(f"drivers.json: no horizon {multiple} for {driver}")
 
 
+def contact_scenario(integrator, scenario, report):
+    for a in load(report):
+        if a["integrator"] == integrator:
+            for s in a["scenarios"]:
+                if s["scenario"] == scenario:
+                    return s
+    raise KeyError(f"{report}: {integrator} has no contact scenario {scenario}")
+
+
+def contact_measure(integrator, scenario, name, report):
+    """A contact measure at the report's first step (h = 1/60)."""
+    for m in contact_scenario(integrator, scenario, report)["runs"][0]["measures"]:
+        if m["name"] == name:
+            return m["value"]
+    raise KeyError(f"{report}: {integrator} on {scenario} has no measure '{name}'")
+
+
+def contact_isotropy(integrator, report):
+    """The stopping distance over v0^2/(2 mu g) at each theta and psi of the sweep, in its order."""
+    return [p["over_exact"] for p in contact_scenario(integrator, "contact_slide", report)["isotropy"]]
+
+
+def repro_isotropy(program, cone):
+    return [repro(program, f"{cone}_slide_theta{theta}_psi{psi}_over_exact") for psi in (0, 30)
+            for theta in range(0, 91, 15)]
+
+
 def held_robot_mass_error(library, report="dynamics-mujoco/dynamics.json"):
     """max |M_held - M_given| of a dynamics campaign, from eps of the scale back to units."""
     for c in load(report):
@@ -208,6 +235,35 @@ CHECKS = [
     ("mujoco-fullinertia", "MuJoCo 2.2.2: the mass matrix of the compiled one-link robot against I_zz",
      lambda: repro("mujoco_fullinertia", "mass_matrix_error"),
      lambda: held_robot_mass_error("mujoco"), 1e-6, True),
+    # MuJoCo's contact: the same model, start and reading (mujoco_contact.c says why the reading
+    # matters), the same arithmetic: 1e-6 relative. The elliptic cone's spread is rounding (4e-13
+    # of the distance): held absolutely to 1e-9, a millionth of the isotropy verdict's 1e-3.
+    ("mujoco-contact", "MuJoCo 2.2.2, pyramidal cone: the stopping distance over v0^2/(2 mu g) at each theta, psi",
+     lambda: repro_isotropy("mujoco_contact", "pyramidal"),
+     lambda: contact_isotropy("mujoco::Euler", "contact-mujoco/contact.json"), 1e-6, True),
+    ("mujoco-contact", "MuJoCo 2.2.2, pyramidal cone: the spread of the stopping distance over theta and psi",
+     lambda: repro("mujoco_contact", "pyramidal_slide_spread"),
+     lambda: contact_scenario("mujoco::Euler", "contact_slide", "contact-mujoco/contact.json")["anisotropy"],
+     1e-6, True),
+    ("mujoco-contact", "MuJoCo 2.2.2, elliptic cone: the stopping distance over v0^2/(2 mu g) at each theta, psi",
+     lambda: repro_isotropy("mujoco_contact", "elliptic"),
+     lambda: contact_isotropy("mujoco::Euler/elliptic", "contact-mujoco/contact.json"), 1e-6, True),
+    ("mujoco-contact", "MuJoCo 2.2.2, elliptic cone: the spread of the stopping distance (rounding)",
+     lambda: repro("mujoco_contact", "elliptic_slide_spread"),
+     lambda: contact_scenario("mujoco::Euler/elliptic", "contact_slide", "contact-mujoco/contact.json")["anisotropy"],
+     1e-9, False),
+    ("mujoco-contact", "MuJoCo 2.2.2, pyramidal cone: the creep rate down a slope below the friction angle",
+     lambda: repro("mujoco_contact", "pyramidal_slope_creep_rate"),
+     lambda: contact_measure("mujoco::Euler", "contact_slope_stick", "creep rate (second half)",
+                             "contact-mujoco/contact.json"), 1e-6, True),
+    ("mujoco-contact", "MuJoCo 2.2.2, pyramidal cone: the creep down the slope in 3 s",
+     lambda: repro("mujoco_contact", "pyramidal_slope_creep"),
+     lambda: contact_measure("mujoco::Euler", "contact_slope_stick", "creep down the slope",
+                             "contact-mujoco/contact.json"), 1e-6, True),
+    ("mujoco-contact", "MuJoCo 2.2.2, elliptic cone: the creep rate down the slope",
+     lambda: repro("mujoco_contact", "elliptic_slope_creep_rate"),
+     lambda: contact_measure("mujoco::Euler/elliptic", "contact_slope_stick", "creep rate (second half)",
+                             "contact-mujoco/contact.json"), 1e-6, True),
     ("mujoco-rk4", "RK4's order in the orientation (free symmetric top)",
      lambda: repro("mujoco_rk4_orientation", "rk4_axis_order"),
      lambda: class_fit("mujoco::RK4", "free_symmetric_top", "orientation"), 0.05, False),
