@@ -123,6 +123,14 @@ def contact_measure(integrator, scenario, name, report):
     raise KeyError(f"{report}: {integrator} on {scenario} has no measure '{name}'")
 
 
+def contact_series(integrator, scenario, name, report):
+    """A contact measure at each step of the report's runs (h = 1/60 and its halvings)."""
+    out = []
+    for r in contact_scenario(integrator, scenario, report)["runs"]:
+        out += [m["value"] for m in r["measures"] if m["name"] == name]
+    return out
+
+
 def contact_isotropy(integrator, report):
     """The stopping distance over v0^2/(2 mu g) at each theta and psi of the sweep, in its order."""
     return [p["over_exact"] for p in contact_scenario(integrator, "contact_slide", report)["isotropy"]]
@@ -291,6 +299,26 @@ CHECKS = [
      lambda: repro("ode_contact", "quickstep_slope_creep"),
      lambda: contact_measure("ode::quickstep", "contact_slope_stick", "creep down the slope",
                              "contact-ode/contact.json"), 1e-6, True),
+    # Bullet's contact: the same world, start and arithmetic: 1e-6 relative.
+    ("bullet-contact", "Bullet 3.24: the stopping distance over v0^2/(2 mu g) at each theta, psi",
+     lambda: [repro("bullet_contact", f"slide_theta{t}_psi{p}_over_exact") for p in (0, 30) for t in range(0, 91, 15)],
+     lambda: contact_isotropy("bullet::gyroscopic_implicit_body", "contact-bullet/contact.json"), 1e-6, True),
+    ("bullet-contact", "Bullet 3.24: the spread of the stopping distance over theta and psi",
+     lambda: repro("bullet_contact", "slide_spread"),
+     lambda: contact_scenario("bullet::gyroscopic_implicit_body", "contact_slide",
+                              "contact-bullet/contact.json")["anisotropy"], 1e-6, True),
+    ("bullet-contact", "Bullet 3.24: the stopping distance at h = 1/60 to 1/960 (m)",
+     lambda: [repro("bullet_contact", f"slide_distance_n{n}") for n in (60, 120, 240, 480, 960)],
+     lambda: contact_series("bullet::gyroscopic_implicit_body", "contact_slide", "stopping distance",
+                            "contact-bullet/contact.json"), 1e-6, True),
+    ("bullet-contact", "Bullet 3.24: the creep down a slope below the friction angle in 3 s",
+     lambda: repro("bullet_contact", "slope_creep"),
+     lambda: contact_measure("bullet::gyroscopic_implicit_body", "contact_slope_stick", "creep down the slope",
+                             "contact-bullet/contact.json"), 1e-6, True),
+    ("bullet-contact", "Bullet 3.24: the creep rate over the second half",
+     lambda: repro("bullet_contact", "slope_creep_rate"),
+     lambda: contact_measure("bullet::gyroscopic_implicit_body", "contact_slope_stick", "creep rate (second half)",
+                             "contact-bullet/contact.json"), 1e-6, True),
     ("mujoco-rk4", "RK4's order in the orientation (free symmetric top)",
      lambda: repro("mujoco_rk4_orientation", "rk4_axis_order"),
      lambda: class_fit("mujoco::RK4", "free_symmetric_top", "orientation"), 0.05, False),
