@@ -319,6 +319,20 @@ CHECKS = [
      lambda: repro("bullet_contact", "slope_creep_rate"),
      lambda: contact_measure("bullet::gyroscopic_implicit_body", "contact_slope_stick", "creep rate (second half)",
                              "contact-bullet/contact.json"), 1e-6, True),
+    # DART's contact: the same worlds, starts and arithmetic, at h = 1/60 and 1/960: 1e-6 relative.
+] + [
+    (f"dart-contact", f"DART 6.12.1 ({which}): {what} at h = 1/60 and 1/960",
+     lambda key=key, which=which: [repro("dart_contact", f"{'mesh' if which == 'dart::World' else 'primitive'}_{key}_n{n}")
+                                   for n in (60, 960)],
+     lambda scenario=scenario, name=name, which=which: [
+         contact_series(which, scenario, name, "contact-dart/contact.json")[i] for i in (0, -1)], 1e-6, True)
+    for which in ("dart::World", "dart::World/fcl_primitive")
+    for key, scenario, name, what in (
+        ("roll_distance", "contact_roll", "distance down the slope", "the ball's distance down the slope in 1 s"),
+        ("billiard_final_speed", "contact_billiard", "final speed", "the billiard ball's speed at 1 s"),
+        ("collision_v1_error", "contact_collision", "body 1's velocity after, error",
+         "the head-on collision: the first ball's velocity after, its error"))
+] + [
     ("mujoco-rk4", "RK4's order in the orientation (free symmetric top)",
      lambda: repro("mujoco_rk4_orientation", "rk4_axis_order"),
      lambda: class_fit("mujoco::RK4", "free_symmetric_top", "orientation"), 0.05, False),
