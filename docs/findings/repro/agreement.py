@@ -131,6 +131,14 @@ def contact_series(integrator, scenario, name, report):
     return out
 
 
+def contact_measure_at(integrator, scenario, name, report, index):
+    """A contact measure in the report's run `index` (0: h = 1/60, -1: the finest h)."""
+    for m in contact_scenario(integrator, scenario, report)["runs"][index]["measures"]:
+        if m["name"] == name:
+            return m["value"]
+    raise KeyError(f"{report}: {integrator} on {scenario} has no measure '{name}' in run {index}")
+
+
 def contact_isotropy(integrator, report):
     """The stopping distance over v0^2/(2 mu g) at each theta and psi of the sweep, in its order."""
     return [p["over_exact"] for p in contact_scenario(integrator, "contact_slide", report)["isotropy"]]
@@ -268,6 +276,10 @@ CHECKS = [
      lambda: repro("mujoco_contact", "pyramidal_slope_creep"),
      lambda: contact_measure("mujoco::Euler", "contact_slope_stick", "creep down the slope",
                              "contact-mujoco/contact.json"), 1e-6, True),
+    ("mujoco-contact", "MuJoCo 2.2.2, e = 0.5 as solref's damping ratio: the ball's first apex at h = 1/60 and 1/960",
+     lambda: [repro("mujoco_contact", f"bounce_apex1_n{n}") for n in (150, 2400)],
+     lambda: [contact_measure_at("mujoco::Euler", "contact_bounce", "apex 1", "contact-mujoco/contact.json", i)
+              for i in (0, -1)], 1e-6, True),
     ("mujoco-contact", "MuJoCo 2.2.2, elliptic cone: the creep rate down the slope",
      lambda: repro("mujoco_contact", "elliptic_slope_creep_rate"),
      lambda: contact_measure("mujoco::Euler/elliptic", "contact_slope_stick", "creep rate (second half)",

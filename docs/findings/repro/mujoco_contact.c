@@ -54,6 +54,62 @@ static mjModel* load(int elliptic, int noslip, double slope) {
   return m;
 }
 
+/* The bouncing ball: r = 0.05 m, 0.1 kg (moments 2/5 m r^2), its lowest point dropped from 1 m
+ * onto the level plane, friction 0.5, and a restitution e = 0.5 asked of MuJoCo's soft contact
+ * the only way its solref allows: the damping ratio of the contact's reference dynamics, a
+ * damped oscillator whose rebound over an impact is exp(-zeta pi / sqrt(1 - zeta^2)), so
+ * zeta = -ln e / sqrt(pi^2 + ln^2 e) = 0.2155, with MuJoCo's default time constant 0.02 s (both
+ * geoms' solref "0.02 zeta"). Printed: its first two apexes (the lowest point's local maxima
+ * after the first contact, as the audit finds them) at h = 1/60 and 1/960, against e^2 h = 0.25
+ * and e^4 h = 0.0625. */
+static void bounce(int n, double apex[2]) {
+  const double e = 0.5, zeta = -log(e) / sqrt(M_PI * M_PI + log(e) * log(e)), r = 0.05, m = 0.1, h0 = 1;
+  char xml[2048], error[1000];
+  snprintf(xml, sizeof xml,
+           "<mujoco><compiler angle=\"radian\"/><option timestep=\"0.01\" gravity=\"0 0 -9.81\" integrator=\"Euler\" "
+           "cone=\"pyramidal\"/><worldbody><geom name=\"ground\" type=\"plane\" size=\"0 0 1\" euler=\"0 0 0\" "
+           "condim=\"3\" friction=\"0.5 0 0\" solref=\"0.02 %.17g\"/><body><freejoint/><inertial pos=\"0 0 0\" "
+           "mass=\"%.17g\" diaginertia=\"%.17g %.17g %.17g\"/><geom type=\"sphere\" size=\"%.17g\" condim=\"3\" "
+           "friction=\"0.5 0 0\" solref=\"0.02 %.17g\"/></body></worldbody></mujoco>",
+           zeta, m, 0.4 * m * r * r, 0.4 * m * r * r, 0.4 * m * r * r, r, zeta);
+  mjVFS vfs;
+  mj_defaultVFS(&vfs);
+  mj_makeEmptyFileVFS(&vfs, "ball.xml", (int)strlen(xml));
+  memcpy(vfs.filedata[mj_findFileVFS(&vfs, "ball.xml")], xml, strlen(xml));
+  mjModel* model = mj_loadXML("ball.xml", &vfs, error, sizeof error);
+  mj_deleteVFS(&vfs);
+  if (!model) {
+    fprintf(stderr, "mj_loadXML: %s\n", error);
+    exit(1);
+  }
+  const double h = 2.5 / n; /* 2.5 s */
+  model->opt.timestep = h;
+  mjData* d = mj_makeData(model);
+  d->qpos[2] = h0 + r;
+  mj_forward(model, d);
+  double* z = malloc(sizeof(double) * (size_t)(n + 1));
+  z[0] = d->qpos[2] - r;
+  for (int k = 1; k <= n; ++k) {
+    mj_step(model, d);
+    z[k] = d->qpos[2] - r;
+  }
+  /* The audit's apexes: after the ball has come within a tenth of half the expected apex
+   * (e^(2k) h0 / 2) past half the fall time, the next local maximum above 0.1 mm. */
+  const double fall = sqrt(2 * h0 / 9.81);
+  int k = 0, touched = 0;
+  apex[0] = apex[1] = NAN;
+  for (int i = 1; i + 1 <= n && k < 2; ++i) {
+    if (z[i] < 0.5 * h0 * pow(e, 2 * k) * 0.1 + 1e-9 && !touched && i * h > fall * 0.5) touched = 1;
+    if (touched && z[i] > z[i - 1] && z[i] >= z[i + 1] && z[i] > 1e-4) {
+      apex[k++] = z[i];
+      touched = 0;
+    }
+  }
+  free(z);
+  mj_deleteData(d);
+  mj_deleteModel(model);
+}
+
 /* The start and every step are read as the audit reads them: mj_kinematics, mj_comPos and
  * mj_comVel after the start's mj_forward and after each mj_step. The box starts exactly on the
  * plane, and whether MuJoCo's first step on the slope finds the contact depends on the last bit
@@ -156,6 +212,12 @@ int main(void) {
     creep(elliptic, 10, 1, &total, &rate);
     printf("%s_noslip10_slope_creep %.6e\n", cones[elliptic], total);
     printf("%s_noslip10_slope_creep_rate %.6e\n", cones[elliptic], rate);
+  }
+  for (int n = 150; n <= 2400; n *= 16) {
+    double apex[2];
+    bounce(n, apex);
+    printf("bounce_apex1_n%d %.9e\n", n, apex[0]);
+    printf("bounce_apex2_n%d %.9e\n", n, apex[1]);
   }
   return 0;
 }
