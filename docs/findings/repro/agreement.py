@@ -144,9 +144,26 @@ def contact_isotropy(integrator, report):
     return [p["over_exact"] for p in contact_scenario(integrator, "contact_slide", report)["isotropy"]]
 
 
-def repro_isotropy(program, cone):
-    return [repro(program, f"{cone}_slide_theta{theta}_psi{psi}_over_exact") for psi in (0, 30)
+def repro_isotropy(program, prefix):
+    return [repro(program, f"{prefix}slide_theta{theta}_psi{psi}_over_exact") for psi in (0, 30)
             for theta in range(0, 91, 15)]
+
+
+def slide_pairs(finding, label, program, prefix, integrator, report, spread_tolerance=1e-6, spread_relative=True):
+    """The sliding box's two pairs: its stopping distance at each theta, psi of the sweep, and their spread."""
+    return [
+        (finding, f"{label}: the stopping distance over v0^2/(2 mu g) at each theta, psi",
+         lambda: repro_isotropy(program, prefix), lambda: contact_isotropy(integrator, report), 1e-6, True),
+        (finding, f"{label}: the spread of the stopping distance over theta and psi",
+         lambda: repro(program, f"{prefix}slide_spread"),
+         lambda: contact_scenario(integrator, "contact_slide", report)["anisotropy"], spread_tolerance, spread_relative),
+    ]
+
+
+def measure_pair(finding, what, program, key, integrator, scenario, name, report, tolerance=1e-6, relative=True):
+    """A reproducer's number against a contact measure at the report's first step (h = 1/60)."""
+    return (finding, what, lambda: repro(program, key),
+            lambda: contact_measure(integrator, scenario, name, report), tolerance, relative)
 
 
 def held_robot_mass_error(library, report="dynamics-mujoco/dynamics.json"):
@@ -254,90 +271,58 @@ CHECKS = [
     # MuJoCo's contact: the same model, start and reading (mujoco_contact.c says why the reading
     # matters), the same arithmetic: 1e-6 relative. The elliptic cone's spread is rounding (4e-13
     # of the distance): held absolutely to 1e-9, a millionth of the isotropy verdict's 1e-3.
-    ("mujoco-contact", "MuJoCo 2.2.2, pyramidal cone: the stopping distance over v0^2/(2 mu g) at each theta, psi",
-     lambda: repro_isotropy("mujoco_contact", "pyramidal"),
-     lambda: contact_isotropy("mujoco::Euler", "contact-mujoco/contact.json"), 1e-6, True),
-    ("mujoco-contact", "MuJoCo 2.2.2, pyramidal cone: the spread of the stopping distance over theta and psi",
-     lambda: repro("mujoco_contact", "pyramidal_slide_spread"),
-     lambda: contact_scenario("mujoco::Euler", "contact_slide", "contact-mujoco/contact.json")["anisotropy"],
-     1e-6, True),
-    ("mujoco-contact", "MuJoCo 2.2.2, elliptic cone: the stopping distance over v0^2/(2 mu g) at each theta, psi",
-     lambda: repro_isotropy("mujoco_contact", "elliptic"),
-     lambda: contact_isotropy("mujoco::Euler/elliptic", "contact-mujoco/contact.json"), 1e-6, True),
-    ("mujoco-contact", "MuJoCo 2.2.2, elliptic cone: the spread of the stopping distance (rounding)",
-     lambda: repro("mujoco_contact", "elliptic_slide_spread"),
-     lambda: contact_scenario("mujoco::Euler/elliptic", "contact_slide", "contact-mujoco/contact.json")["anisotropy"],
-     1e-9, False),
-    ("mujoco-contact", "MuJoCo 2.2.2, pyramidal cone: the creep rate down a slope below the friction angle",
-     lambda: repro("mujoco_contact", "pyramidal_slope_creep_rate"),
-     lambda: contact_measure("mujoco::Euler", "contact_slope_stick", "creep rate (second half)",
-                             "contact-mujoco/contact.json"), 1e-6, True),
-    ("mujoco-contact", "MuJoCo 2.2.2, pyramidal cone: the creep down the slope in 3 s",
-     lambda: repro("mujoco_contact", "pyramidal_slope_creep"),
-     lambda: contact_measure("mujoco::Euler", "contact_slope_stick", "creep down the slope",
-                             "contact-mujoco/contact.json"), 1e-6, True),
+    *slide_pairs("mujoco-contact", "MuJoCo 2.2.2, pyramidal cone", "mujoco_contact", "pyramidal_", "mujoco::Euler",
+                 "contact-mujoco/contact.json"),
+    *slide_pairs("mujoco-contact", "MuJoCo 2.2.2, elliptic cone (its spread is rounding)", "mujoco_contact",
+                 "elliptic_", "mujoco::Euler/elliptic", "contact-mujoco/contact.json", 1e-9, False),
+    measure_pair("mujoco-contact", "MuJoCo 2.2.2, pyramidal cone: the creep rate down a slope below the friction angle",
+                 "mujoco_contact", "pyramidal_slope_creep_rate", "mujoco::Euler", "contact_slope_stick",
+                 "creep rate (second half)", "contact-mujoco/contact.json"),
+    measure_pair("mujoco-contact", "MuJoCo 2.2.2, pyramidal cone: the creep down the slope in 3 s", "mujoco_contact",
+                 "pyramidal_slope_creep", "mujoco::Euler", "contact_slope_stick", "creep down the slope",
+                 "contact-mujoco/contact.json"),
+    measure_pair("mujoco-contact", "MuJoCo 2.2.2, elliptic cone: the creep rate down the slope", "mujoco_contact",
+                 "elliptic_slope_creep_rate", "mujoco::Euler/elliptic", "contact_slope_stick",
+                 "creep rate (second half)", "contact-mujoco/contact.json"),
     ("mujoco-contact", "MuJoCo 2.2.2, e = 0.5 as solref's damping ratio: the ball's first apex at h = 1/60 and 1/960",
      lambda: [repro("mujoco_contact", f"bounce_apex1_n{n}") for n in (150, 2400)],
      lambda: [contact_measure_at("mujoco::Euler", "contact_bounce", "apex 1", "contact-mujoco/contact.json", i)
               for i in (0, -1)], 1e-6, True),
-    ("mujoco-contact", "MuJoCo 2.2.2, elliptic cone: the creep rate down the slope",
-     lambda: repro("mujoco_contact", "elliptic_slope_creep_rate"),
-     lambda: contact_measure("mujoco::Euler/elliptic", "contact_slope_stick", "creep rate (second half)",
-                             "contact-mujoco/contact.json"), 1e-6, True),
     # ODE's contact: the same world, start and arithmetic: 1e-6 relative; dWorldStep's creep rate
     # (6e-11 m/s: its LCP holds the box) absolutely to 1e-9 m/s, a thousandth of the verdict's 1e-6.
-    ("ode-contact", "ODE 0.16.2, dWorldStep: the stopping distance over v0^2/(2 mu g) at each theta, psi",
-     lambda: repro_isotropy("ode_contact", "step"),
-     lambda: contact_isotropy("ode::step", "contact-ode/contact.json"), 1e-6, True),
-    ("ode-contact", "ODE 0.16.2, dWorldStep: the spread of the stopping distance over theta and psi",
-     lambda: repro("ode_contact", "step_slide_spread"),
-     lambda: contact_scenario("ode::step", "contact_slide", "contact-ode/contact.json")["anisotropy"], 1e-6, True),
-    ("ode-contact", "ODE 0.16.2, dWorldQuickStep: the stopping distance over v0^2/(2 mu g) at each theta, psi",
-     lambda: repro_isotropy("ode_contact", "quickstep"),
-     lambda: contact_isotropy("ode::quickstep", "contact-ode/contact.json"), 1e-6, True),
-    ("ode-contact", "ODE 0.16.2, dWorldQuickStep: the spread of the stopping distance over theta and psi",
-     lambda: repro("ode_contact", "quickstep_slide_spread"),
-     lambda: contact_scenario("ode::quickstep", "contact_slide", "contact-ode/contact.json")["anisotropy"],
-     1e-6, True),
-    ("ode-contact", "ODE 0.16.2, dWorldStep: the creep rate down a slope below the friction angle",
-     lambda: repro("ode_contact", "step_slope_creep_rate"),
-     lambda: contact_measure("ode::step", "contact_slope_stick", "creep rate (second half)",
-                             "contact-ode/contact.json"), 1e-9, False),
-    ("ode-contact", "ODE 0.16.2, dWorldQuickStep (20 iterations): the creep rate down the slope",
-     lambda: repro("ode_contact", "quickstep_slope_creep_rate"),
-     lambda: contact_measure("ode::quickstep", "contact_slope_stick", "creep rate (second half)",
-                             "contact-ode/contact.json"), 1e-6, True),
-    ("ode-contact", "ODE 0.16.2, dWorldQuickStep (20 iterations): the creep down the slope in 3 s",
-     lambda: repro("ode_contact", "quickstep_slope_creep"),
-     lambda: contact_measure("ode::quickstep", "contact_slope_stick", "creep down the slope",
-                             "contact-ode/contact.json"), 1e-6, True),
+    *slide_pairs("ode-contact", "ODE 0.16.2, dWorldStep", "ode_contact", "step_", "ode::step",
+                 "contact-ode/contact.json"),
+    *slide_pairs("ode-contact", "ODE 0.16.2, dWorldQuickStep", "ode_contact", "quickstep_", "ode::quickstep",
+                 "contact-ode/contact.json"),
+    measure_pair("ode-contact", "ODE 0.16.2, dWorldStep: the creep rate down a slope below the friction angle",
+                 "ode_contact", "step_slope_creep_rate", "ode::step", "contact_slope_stick", "creep rate (second half)",
+                 "contact-ode/contact.json", 1e-9, False),
+    measure_pair("ode-contact", "ODE 0.16.2, dWorldQuickStep (20 iterations): the creep rate down the slope",
+                 "ode_contact", "quickstep_slope_creep_rate", "ode::quickstep", "contact_slope_stick",
+                 "creep rate (second half)", "contact-ode/contact.json"),
+    measure_pair("ode-contact", "ODE 0.16.2, dWorldQuickStep (20 iterations): the creep down the slope in 3 s",
+                 "ode_contact", "quickstep_slope_creep", "ode::quickstep", "contact_slope_stick",
+                 "creep down the slope", "contact-ode/contact.json"),
     # Bullet's contact: the same world, start and arithmetic: 1e-6 relative.
-    ("bullet-contact", "Bullet 3.24: the stopping distance over v0^2/(2 mu g) at each theta, psi",
-     lambda: [repro("bullet_contact", f"slide_theta{t}_psi{p}_over_exact") for p in (0, 30) for t in range(0, 91, 15)],
-     lambda: contact_isotropy("bullet::gyroscopic_implicit_body", "contact-bullet/contact.json"), 1e-6, True),
-    ("bullet-contact", "Bullet 3.24: the spread of the stopping distance over theta and psi",
-     lambda: repro("bullet_contact", "slide_spread"),
-     lambda: contact_scenario("bullet::gyroscopic_implicit_body", "contact_slide",
-                              "contact-bullet/contact.json")["anisotropy"], 1e-6, True),
+    *slide_pairs("bullet-contact", "Bullet 3.24", "bullet_contact", "", "bullet::gyroscopic_implicit_body",
+                 "contact-bullet/contact.json"),
     ("bullet-contact", "Bullet 3.24: the stopping distance at h = 1/60 to 1/960 (m)",
      lambda: [repro("bullet_contact", f"slide_distance_n{n}") for n in (60, 120, 240, 480, 960)],
      lambda: contact_series("bullet::gyroscopic_implicit_body", "contact_slide", "stopping distance",
                             "contact-bullet/contact.json"), 1e-6, True),
-    ("bullet-contact", "Bullet 3.24: the creep down a slope below the friction angle in 3 s",
-     lambda: repro("bullet_contact", "slope_creep"),
-     lambda: contact_measure("bullet::gyroscopic_implicit_body", "contact_slope_stick", "creep down the slope",
-                             "contact-bullet/contact.json"), 1e-6, True),
-    ("bullet-contact", "Bullet 3.24: the creep rate over the second half",
-     lambda: repro("bullet_contact", "slope_creep_rate"),
-     lambda: contact_measure("bullet::gyroscopic_implicit_body", "contact_slope_stick", "creep rate (second half)",
-                             "contact-bullet/contact.json"), 1e-6, True),
+    measure_pair("bullet-contact", "Bullet 3.24: the creep down a slope below the friction angle in 3 s",
+                 "bullet_contact", "slope_creep", "bullet::gyroscopic_implicit_body", "contact_slope_stick",
+                 "creep down the slope", "contact-bullet/contact.json"),
+    measure_pair("bullet-contact", "Bullet 3.24: the creep rate over the second half", "bullet_contact",
+                 "slope_creep_rate", "bullet::gyroscopic_implicit_body", "contact_slope_stick",
+                 "creep rate (second half)", "contact-bullet/contact.json"),
     # DART's contact: the same worlds, starts and arithmetic, at h = 1/60 and 1/960: 1e-6 relative.
 ] + [
-    (f"dart-contact", f"DART 6.12.1 ({which}): {what} at h = 1/60 and 1/960",
-     lambda key=key, which=which: [repro("dart_contact", f"{'mesh' if which == 'dart::World' else 'primitive'}_{key}_n{n}")
-                                   for n in (60, 960)],
+    ("dart-contact", f"DART 6.12.1 ({which}): {what} at h = 1/60 and 1/960",
+     lambda key=key, which=which: [
+         repro("dart_contact", f"{'mesh' if which == 'dart::World' else 'primitive'}_{key}_n{n}") for n in (60, 960)],
      lambda scenario=scenario, name=name, which=which: [
-         contact_series(which, scenario, name, "contact-dart/contact.json")[i] for i in (0, -1)], 1e-6, True)
+         contact_measure_at(which, scenario, name, "contact-dart/contact.json", i) for i in (0, -1)], 1e-6, True)
     for which in ("dart::World", "dart::World/fcl_primitive")
     for key, scenario, name, what in (
         ("roll_distance", "contact_roll", "distance down the slope", "the ball's distance down the slope in 1 s"),
