@@ -62,6 +62,37 @@ TEST(contact, a_pyramid_cone_is_caught_as_anisotropy) {
   const audit::verdict& v = verdict_of(a, "friction cone");
   EXPECT_EQ(v.result, outcome::contradicted) << v.measured << " -- " << v.evidence;
   EXPECT_NEAR(a.scenarios.front().anisotropy, 1 - 1 / std::sqrt(2.0), 0.05);
+  // A soft contact excuses a pose's few thousandths, not a pyramid's spread: the same engine
+  // declared soft is contradicted too, in the sweep and in the random cases.
+  audit::engine_integrator soft = exact_contact_engine(variant::pyramid);
+  soft.contact->soft = true;
+  audit::contact_options cases;
+  cases.scenarios = {"contact_slide"};
+  cases.cases = 20;
+  const audit::contact_audit b = audit::audit_contact(soft, cases);
+  EXPECT_EQ(verdict_of(b, "friction cone").result, outcome::contradicted) << verdict_of(b, "friction cone").evidence;
+  EXPECT_EQ(verdict_of(b, "random cases").result, outcome::contradicted) << verdict_of(b, "random cases").measured;
+}
+
+TEST(contact, an_error_within_the_engines_rounding_floor_is_not_a_failure_to_converge) {
+  // A lateral error of 1e-5 m at every h (2.5e-5 of the slide's 0.408 m): under the floor of
+  // a single-precision engine (960 steps of 2^-23: 1.1e-4) it is rounding; in double (floor
+  // 1e-6) it does not converge; 1e-3 m (2.5e-3) does not converge in either.
+  const auto exact_motions = [](variant v, double epsilon) {
+    audit::engine_integrator e = exact_contact_engine(v);
+    e.epsilon = epsilon;
+    const audit::contact_audit a = audit::audit_contact(e, {{"contact_slide"}});
+    return verdict_of(a, "exact motions");
+  };
+  const audit::verdict single = exact_motions(variant::lateral_small, 0x1p-23);
+  EXPECT_EQ(single.result, outcome::confirmed) << single.measured << " -- " << single.evidence;
+  EXPECT_NE(single.evidence.find("deviation from the line: within the rounding floor at the finest h"), std::string::npos)
+      << single.evidence;
+  for (const auto& [v, epsilon] : {std::pair{variant::lateral_small, 0x1p-52}, std::pair{variant::lateral_large, 0x1p-23}}) {
+    const audit::verdict wrong = exact_motions(v, epsilon);
+    EXPECT_EQ(wrong.result, outcome::measured) << wrong.measured << " -- " << wrong.evidence;
+    EXPECT_NE(wrong.evidence.find("deviation from the line: does not converge"), std::string::npos) << wrong.evidence;
+  }
 }
 
 TEST(contact, a_creeping_stick_is_caught_as_creep) {

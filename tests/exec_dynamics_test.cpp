@@ -185,6 +185,35 @@ TEST(exec_dynamics, a_handshake_lists_known_quantities_once) {
   EXPECT_THROW(parse_handshake(head + R"("quantities": ["bias"]})", "engine"), audit::exec_error);
 }
 
+TEST(exec_dynamics, an_engines_integrator_declares_its_contact_and_its_claims) {
+  // "contact" on an integrator: it builds the contact scenarios, with what the engine's
+  // documentation claims; absent: it builds none; a claim not of the protocol is an error.
+  using audit::exec_protocol::parse_handshake;
+  const auto handshake = [](const std::string& integrator) {
+    return parse_handshake(R"({"protocol": "mechcheck", "version": 1, "kind": "engine", "name": "e", "integrators": [)" +
+                               integrator + "]}",
+                           "engine");
+  };
+  const auto h = handshake(R"({"name": "a", "contact": {"friction_cone": "elliptic", "newton_restitution": true, "words": "w"}},)"
+                           R"({"name": "b"}, {"name": "c", "contact": {"soft": true, "only": true}})");
+  ASSERT_EQ(h.integrators.size(), 3u);
+  ASSERT_TRUE(h.integrators[0].contact);
+  EXPECT_EQ(h.integrators[0].contact->friction_cone, "elliptic");
+  EXPECT_EQ(h.integrators[0].contact->newton_restitution, true);
+  EXPECT_FALSE(h.integrators[0].contact->soft);
+  EXPECT_EQ(h.integrators[0].contact->words, "w");
+  EXPECT_FALSE(h.integrators[0].contact_only);
+  EXPECT_FALSE(h.integrators[1].contact);
+  ASSERT_TRUE(h.integrators[2].contact);
+  EXPECT_EQ(h.integrators[2].contact->soft, true);
+  EXPECT_FALSE(h.integrators[2].contact->friction_cone);
+  EXPECT_TRUE(h.integrators[2].contact_only);
+  for (const char* bad : {R"({"name": "a", "contact": {"friction_cone": "circle"}})", R"({"name": "a", "contact": {"soft": 1}})",
+                          R"({"name": "a", "contact": {"cone": "elliptic"}})", R"({"name": "a", "contact": true})",
+                          R"({"name": "a", "contact": {"only": "yes"}})"})
+    EXPECT_THROW(handshake(bad), audit::exec_error) << bad;
+}
+
 TEST(exec_dynamics, an_engines_precision_sets_its_epsilon) {
   using audit::exec_protocol::parse_handshake;
   const std::string head = R"({"protocol": "mechcheck", "version": 1, "kind": "engine", "name": "e", )"

@@ -557,9 +557,21 @@ TEST(exec, a_scenario_sent_in_decimals_reads_back_to_the_bits_of_the_hexadecimal
           EXPECT_EQ(hex, dec) << at;
         }
       };
-  for (const auto& s : audit::scenarios()) {
+  std::vector<audit::scenario> all = audit::scenarios();
+  for (auto& c : audit::contact_scenarios()) all.push_back(std::move(c));
+  for (const auto& s : all) {
     const auto hex = nlohmann::json::parse(ep::scenario_json(s, false)), dec = nlohmann::json::parse(ep::scenario_json(s, true));
     same(hex, dec, s.name);
+    if (s.contact) {  // a contact scenario carries its setup: each body's shape, mass and start
+      ASSERT_EQ(dec.at("structure"), "contact") << s.name;
+      const auto& bodies = dec.at("contact").at("bodies");
+      ASSERT_EQ(bodies.size(), s.contact->bodies.size()) << s.name;
+      EXPECT_EQ(bodies[0].at("shape"), audit::contact_shape_name(s.contact->bodies[0].shape)) << s.name;
+      EXPECT_EQ(*ep::number_value(bodies[0].at("mass").get<std::string>()), s.contact->bodies[0].mass) << s.name;
+      EXPECT_EQ(*ep::number_value(bodies[0].at("position0")[2].get<std::string>()), s.contact->bodies[0].position0(2)) << s.name;
+      EXPECT_EQ(*ep::number_value(dec.at("contact").at("mu").get<std::string>()), s.contact->mu) << s.name;
+      EXPECT_EQ(dec.at("contact").at("ground"), s.contact->ground) << s.name;
+    }
     if (s.name == "pendulum_small") {
       EXPECT_EQ(*ep::number_value(dec.at("mass").get<std::string>()), s.mass);
       EXPECT_EQ(*ep::number_value(dec.at("gravity").get<std::string>()), s.gravity);

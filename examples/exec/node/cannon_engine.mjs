@@ -103,6 +103,8 @@ class Run {
           }),
         );
       this.modelDiffers = soft;
+    } else if (s.structure === 'contact') {
+      this.buildContact(s.contact, ground);
     } else {
       for (const l of s.links) {
         const b = body(l.mass, l.inertia, [1, 0, 0, 0, 1, 0, 0, 0, 1], l.position0, l.velocity0, [0, 0, 0]);
@@ -110,8 +112,35 @@ class Run {
         this.bodies.push(b);
       }
     }
-    // No contacts: the scenarios' bodies have no shapes, and nothing collides.
+    // No contacts but a contact scenario's: the other scenarios' bodies have no shapes.
     this.steps = 0;
+  }
+
+  /** A contact scenario: a shape per body (Box of the half-edges, Sphere, Cylinder along y of
+   * 64 segments: a prism), its moments set again after addShape (which recomputes them from the
+   * shape's bounding box); the ground a Plane (its normal the local z) turned by the slope about
+   * y; every pair the World's defaultContactMaterial, its friction and restitution the
+   * scenario's (no body has a Material, so nothing combines them). */
+  buildContact(c, ground) {
+    this.world.defaultContactMaterial.friction = c.mu;
+    this.world.defaultContactMaterial.restitution = c.restitution;
+    if (c.ground) {
+      ground.addShape(new CANNON.Plane());
+      ground.quaternion.setFromAxisAngle(new CANNON.Vec3(0, 1, 0), c.slope);
+    }
+    for (const k of c.bodies) {
+      const b = body(k.mass, k.inertia, k.rotation0, k.position0, k.velocity0, k.omega0);
+      const [r, y, z] = k.size;
+      if (k.shape === 'box') b.addShape(new CANNON.Box(v3([r, y, z])));
+      else if (k.shape === 'sphere') b.addShape(new CANNON.Sphere(r));
+      else if (k.shape === 'cylinder') b.addShape(new CANNON.Cylinder(r, r, 2 * y, 64));
+      else throw new Refused(`cannon-es ${version}: no ${k.shape} shape`);
+      b.inertia.set(k.inertia[0], k.inertia[1], k.inertia[2]);
+      b.invInertia.set(1 / k.inertia[0], 1 / k.inertia[1], 1 / k.inertia[2]);
+      b.updateInertiaWorld(true);
+      this.world.addBody(b);
+      this.bodies.push(b);
+    }
   }
 
   /** The scenario's forces on the centres of mass, from the current state. */
@@ -192,7 +221,29 @@ await serveEngine(
   {
     name: 'cannon_es',
     origin: `cannon-es ${version} (npm) in Node ${process.version}: World.step(h), one internalStep of h; Body.integrate ("Use new velocity - leap frog", a code comment: velocity from the force, then position and quaternion from the new velocities)`,
-    integrators: [{ name: 'World.step', origin: 'the only integrator; its documentation declares no order' }],
+    integrators: [
+      {
+        name: 'World.step',
+        origin:
+          'the only integrator; its documentation declares no order; contact: the default ContactMaterial with the ' +
+          "scenario's friction and restitution, its equations' stiffness 1e7 and relaxation 3 (the defaults), 10 " +
+          'Gauss-Seidel iterations (GSSolver, the default)',
+        // The documentation (its comments): the friction's maximum force approximated by
+        // mu m g, a fixed limit not scaled by the normal force (a "box"); the contact and
+        // friction equations given a stiffness and a relaxation time: a compliant contact by
+        // design; a restitution "coefficient", no law.
+        contact: {
+          friction_cone: 'box',
+          soft: true,
+          words:
+            'cannon-es World.frictionGravity: "Gravity to use when approximating the friction max force (mu*mass*gravity). ' +
+            'If undefined, global gravity will be used."; ContactMaterial: friction "Friction coefficient.", restitution ' +
+            '"Restitution coefficient.", contactEquationStiffness "Stiffness of the produced contact equations." (default ' +
+            '1e7), contactEquationRelaxation "Relaxation time of the produced contact equations." (default 3), the same ' +
+            'two for the friction equations',
+        },
+      },
+    ],
   },
   (integrator, scenario) => new Run(integrator, scenario),
   moments,

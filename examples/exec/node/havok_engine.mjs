@@ -56,7 +56,18 @@ function rotationOf([x, y, z, w]) {
 /** R^T x, for R row-major: a world vector in the body's frame. */
 const inBody = (r, x) => [0, 1, 2].map((j) => r[j] * x[0] + r[3 + j] * x[1] + r[6 + j] * x[2]);
 
-const integrators = [{ name: 'step', origin: 'HP_World_Step with the ideal step time set to h' }];
+const integrators = [
+  {
+    name: 'step',
+    origin: 'HP_World_Step with the ideal step time set to h',
+    // HavokPhysics.d.ts names a material's fields and nothing of how they act: no claim.
+    contact: {
+      words:
+        'HavokPhysics.d.ts: PhysicsMaterial [static friction, dynamic friction, restitution, friction combine mode, ' +
+        'restitution combine mode]; nothing of a cone, a restitution law or a soft contact',
+    },
+  },
+];
 
 class Run {
   constructor(HK, integrator, scenario) {
@@ -68,10 +79,10 @@ class Run {
     ok('HP_World_SetGravity', HK.HP_World_SetGravity(this.world, [0, 0, -s.gravity]));
     this.shape = ok('HP_Shape_CreateSphere', HK.HP_Shape_CreateSphere([0, 0, 0], 0.1));
     this.handles = [];
-    const make = (motion, mass, inertia, rotation, position, velocity, omega) => {
+    const make = (motion, mass, inertia, rotation, position, velocity, omega, shape = this.shape) => {
       const b = ok('HP_Body_Create', HK.HP_Body_Create());
       this.handles.push(b);
-      ok('HP_Body_SetShape', HK.HP_Body_SetShape(b, this.shape));
+      ok('HP_Body_SetShape', HK.HP_Body_SetShape(b, shape));
       ok('HP_Body_SetMotionType', HK.HP_Body_SetMotionType(b, motion));
       if (motion === HK.MotionType.DYNAMIC) {
         ok('HP_Body_SetMassProperties', HK.HP_Body_SetMassProperties(b, [[0, 0, 0], mass, inertia.map((i) => i / mass), [0, 0, 0, 1]]));
@@ -120,10 +131,34 @@ class Run {
         parent = b;
       });
       if (s.loop) joint(s.loop.anchor, fixed(), parent, true);
+    } else if (s.structure === 'contact') {
+      // A shape a body (HP_Shape_CreateBox of the edges, a sphere, a cylinder along y), the
+      // ground a static box 200 m wide and 2 m deep whose top face is the plane; every shape
+      // the material [mu, mu, e] combined by MINIMUM (every pair: mu and e).
+      const c = s.contact;
+      const material = [c.mu, c.mu, c.restitution, HK.MaterialCombine.MINIMUM, HK.MaterialCombine.MINIMUM];
+      const shaped = (sh) => {
+        ok('HP_Shape_SetMaterial', HK.HP_Shape_SetMaterial(sh, material));
+        return sh;
+      };
+      if (c.ground) {
+        const plane = shaped(ok('HP_Shape_CreateBox', HK.HP_Shape_CreateBox([0, 0, -1], [0, 0, 0, 1], [200, 200, 2])));
+        const turn = [Math.cos(c.slope), 0, Math.sin(c.slope), 0, 1, 0, -Math.sin(c.slope), 0, Math.cos(c.slope)];
+        make(HK.MotionType.STATIC, 0, [0, 0, 0], turn, [0, 0, 0], [0, 0, 0], [0, 0, 0], plane);
+      }
+      for (const k of c.bodies) {
+        const [r, y, z] = k.size;
+        const sh = k.shape === 'box' ? ok('HP_Shape_CreateBox', HK.HP_Shape_CreateBox([0, 0, 0], [0, 0, 0, 1], [2 * r, 2 * y, 2 * z]))
+          : k.shape === 'sphere' ? ok('HP_Shape_CreateSphere', HK.HP_Shape_CreateSphere([0, 0, 0], r))
+          : k.shape === 'cylinder' ? ok('HP_Shape_CreateCylinder', HK.HP_Shape_CreateCylinder([0, -y, 0], [0, y, 0], r))
+          : null;
+        if (sh === null) throw new Refused(`this client builds no ${k.shape} in Havok ${version}`);
+        this.bodies.push(make(HK.MotionType.DYNAMIC, k.mass, k.inertia, k.rotation0, k.position0, k.velocity0, k.omega0, shaped(sh)));
+      }
     } else {
       for (const l of s.links) this.bodies.push(make(HK.MotionType.DYNAMIC, l.mass, l.inertia, identity, l.position0, l.velocity0, [0, 0, 0]));
     }
-    this.masses = s.structure === 'one_body' ? [s.mass] : s.links.map((l) => l.mass);
+    this.masses = s.structure === 'one_body' ? [s.mass] : s.structure === 'contact' ? s.contact.bodies.map((b) => b.mass) : s.links.map((l) => l.mass);
     this.steps = 0;
   }
 

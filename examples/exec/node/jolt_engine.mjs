@@ -33,7 +33,23 @@ const version = JSON.parse(readFileSync(new URL('./node_modules/jolt-physics/pac
 // mNumVelocitySteps = 10 and mNumPositionSteps = 2 by default; a free body's step reads
 // neither).
 const integrators = [
-  { name: 'default', origin: "BodyCreationSettings.mApplyGyroscopicForce = false (Jolt's default)" },
+  {
+    name: 'default',
+    origin:
+      "BodyCreationSettings.mApplyGyroscopicForce = false (Jolt's default); contact: PhysicsSettings at their defaults " +
+      '(mMinVelocityForRestitution 1 m/s: "Minimal velocity needed before a collision can be elastic", ' +
+      'mPenetrationSlop 0.02, mBaumgarte 0.2, mSpeculativeContactDistance 0.02)',
+    // BodyCreationSettings.h's words: friction and restitution coefficients, their ends
+    // described; nothing of a cone, a restitution law or a soft contact.
+    contact: {
+      words:
+        'Jolt BodyCreationSettings.h: mFriction "Friction of the body (dimensionless number, usually between 0 and 1, ' +
+        '0 = no friction, 1 = friction force equals force that presses the two bodies together)", mRestitution ' +
+        '"Restitution of body (dimensionless number, usually between 0 and 1, 0 = completely inelastic collision ' +
+        'response, 1 = completely elastic collision response)"; PhysicsSettings.h: mMinVelocityForRestitution ' +
+        '"Minimal velocity needed before a collision can be elastic" (default 1 m/s)',
+    },
+  },
   {
     name: 'gyroscopic',
     origin:
@@ -69,15 +85,23 @@ function rotationOf(q) {
   ];
 }
 
-/** A physics system of one object layer that collides with nothing. */
-function makeSystem(gravity) {
+/** A physics system of one object layer that collides with nothing, or (contact) of two: the
+ * ground's (STATIC) and the bodies' (MOVING), the bodies colliding with the ground and with
+ * each other. */
+const STATIC = 0, MOVING = 1;
+function makeSystem(gravity, contact = false) {
   const settings = new Jolt.JoltSettings();
-  const pairs = new Jolt.ObjectLayerPairFilterTable(1);
-  const layers = new Jolt.BroadPhaseLayerInterfaceTable(1, 1);
-  layers.MapObjectToBroadPhaseLayer(LAYER, new Jolt.BroadPhaseLayer(0));
+  const n = contact ? 2 : 1;
+  const pairs = new Jolt.ObjectLayerPairFilterTable(n);
+  const layers = new Jolt.BroadPhaseLayerInterfaceTable(n, n);
+  for (let k = 0; k < n; ++k) layers.MapObjectToBroadPhaseLayer(k, new Jolt.BroadPhaseLayer(k));
+  if (contact) {
+    pairs.EnableCollision(STATIC, MOVING);
+    pairs.EnableCollision(MOVING, MOVING);
+  }
   settings.mObjectLayerPairFilter = pairs;
   settings.mBroadPhaseLayerInterface = layers;
-  settings.mObjectVsBroadPhaseLayerFilter = new Jolt.ObjectVsBroadPhaseLayerFilterTable(layers, 1, pairs, 1);
+  settings.mObjectVsBroadPhaseLayerFilter = new Jolt.ObjectVsBroadPhaseLayerFilterTable(layers, n, pairs, n);
   const jolt = new Jolt.JoltInterface(settings);
   Jolt.destroy(settings);
   jolt.GetPhysicsSystem().SetGravity(new Jolt.Vec3(0, 0, -gravity));
@@ -90,7 +114,8 @@ class Run {
     const chosen = settingsOf[integrator];
     const s = scenarioOf(scenario);
     this.s = s;
-    this.jolt = makeSystem(s.gravity);
+    if (s.structure === 'contact' && integrator !== 'default') throw new Refused(`${integrator} builds no contact scenario (default does)`);
+    this.jolt = makeSystem(s.gravity, s.structure === 'contact');
     const physicsSettings = this.jolt.GetPhysicsSystem().GetPhysicsSettings();
     if (physicsSettings.mNumVelocitySteps !== 10 || physicsSettings.mNumPositionSteps !== 2)
       throw new Error(`Jolt's default solver steps read ${physicsSettings.mNumVelocitySteps} and ${physicsSettings.mNumPositionSteps}, not 10 and 2`);
@@ -103,10 +128,11 @@ class Run {
     const bodies = this.jolt.GetPhysicsSystem().GetBodyInterface();
     this.interface = bodies;
     this.shape = new Jolt.SphereShape(0.1, null);
-    const body = (mass, inertia, rotation, position, velocity, omega) => {
+    const body = (mass, inertia, rotation, position, velocity, omega, shape = this.shape, material = null) => {
       const q = quaternionOf(rotation);
-      const c = new Jolt.BodyCreationSettings(this.shape, new Jolt.RVec3(...position), new Jolt.Quat(q.x, q.y, q.z, q.w),
-                                              Jolt.EMotionType_Dynamic, LAYER);
+      const c = new Jolt.BodyCreationSettings(shape, new Jolt.RVec3(...position), new Jolt.Quat(q.x, q.y, q.z, q.w),
+                                              Jolt.EMotionType_Dynamic, material ? MOVING : LAYER);
+      if (material) material(c);
       c.mOverrideMassProperties = Jolt.EOverrideMassProperties_MassAndInertiaProvided;
       c.mMassPropertiesOverride.mMass = mass;
       c.mMassPropertiesOverride.mInertia = new Jolt.Mat44().sScaleVec3(new Jolt.Vec3(...inertia));
@@ -163,12 +189,46 @@ class Run {
         parent = b;
       });
       if (s.loop) hinge(s.loop.anchor, parent, fixed());
+    } else if (s.structure === 'contact') {
+      ground = this.buildContact(s.contact, body);
     } else {
       for (const l of s.links) this.bodies.push(body(l.mass, l.inertia, [1, 0, 0, 0, 1, 0, 0, 0, 1], l.position0, l.velocity0, [0, 0, 0]));
     }
     this.ground = ground;
-    this.masses = s.structure === 'one_body' ? [s.mass] : s.links.map((l) => l.mass);
+    this.masses = s.structure === 'one_body' ? [s.mass] : s.structure === 'contact' ? s.contact.bodies.map((b) => b.mass) : s.links.map((l) => l.mass);
     this.steps = 0;
+  }
+
+  /** A contact scenario: a body of each shape (BoxShape of the half-edges and SphereShape, a
+   * CylinderShape along y, convex radius 0: no rounded corners), its mass and moments given;
+   * the ground a static PlaneShape through the origin. Every body and the ground carry the
+   * scenario's mFriction and mRestitution: Jolt combines two bodies' friction by the geometric
+   * mean and their restitution by the maximum (PhysicsSystem's defaults), so every pair has
+   * them. Returns the ground. */
+  buildContact(c, body) {
+    const material = (settings) => {
+      settings.mFriction = c.mu;
+      settings.mRestitution = c.restitution;
+    };
+    let ground = null;
+    if (c.ground) {
+      const plane = new Jolt.PlaneShape(new Jolt.Plane(new Jolt.Vec3(...c.normal), 0));
+      const settings = new Jolt.BodyCreationSettings(plane, new Jolt.RVec3(0, 0, 0), new Jolt.Quat(0, 0, 0, 1), Jolt.EMotionType_Static, STATIC);
+      material(settings);
+      ground = this.interface.CreateBody(settings);
+      Jolt.destroy(settings);
+      this.interface.AddBody(ground.GetID(), Jolt.EActivation_DontActivate);
+    }
+    for (const k of c.bodies) {
+      const [r, y, z] = k.size;
+      const shape = k.shape === 'box' ? new Jolt.BoxShape(new Jolt.Vec3(r, y, z), 0)
+        : k.shape === 'sphere' ? new Jolt.SphereShape(r)
+        : k.shape === 'cylinder' ? new Jolt.CylinderShape(y, r, 0)
+        : null;
+      if (!shape) throw new Refused(`this client builds no ${k.shape} in Jolt ${version}`);
+      this.bodies.push(body(k.mass, k.inertia, k.rotation0, k.position0, k.velocity0, k.omega0, shape, material));
+    }
+    return ground;
   }
 
   applyForces() {

@@ -36,6 +36,38 @@ const xmlName = { Euler: 'Euler', RK4: 'RK4', implicit: 'implicit', implicitfast
 const text = (x) => String(x); // the shortest decimal that reads back exactly
 const vec = (v) => v.map(text).join(' ');
 
+/** The damping ratio of solref that gives a soft contact's rebound e over an impact (the C++
+ * adapter's damping_ratio): zeta = -ln e / sqrt(pi^2 + ln^2 e), 1 (critical) for e = 0. */
+function dampingRatio(e) {
+  if (e <= 0) return 1;
+  const l = Math.log(e);
+  return -l / Math.sqrt(Math.PI * Math.PI + l * l);
+}
+
+/** The MJCF of a contact scenario (the C++ adapter's mjcf_contact, line for line): the ground a
+ * plane geom turned by the slope about y; each body a free body with its inertial and one geom
+ * of its shape (a cylinder's axis turned onto the body's y); every geom friction "mu 0 0" and
+ * condim 3 (1 where mu = 0): MuJoCo combines two geoms' friction by their maximum; e > 0
+ * through solref's damping ratio at MuJoCo's default time constant 0.02 s. */
+function mjcfContact(s, integrator, cone) {
+  const c = s.contact;
+  const surface =
+    ` condim="${c.mu > 0 ? 3 : 1}" friction="${vec([c.mu > 0 ? c.mu : 1, 0, 0])}"` +
+    (c.restitution > 0 ? ` solref="${vec([0.02, dampingRatio(c.restitution)])}"` : '');
+  let xml = `<mujoco><compiler angle="radian"/><option timestep="0.01" gravity="0 0 ${text(-s.gravity)}" ` +
+    `integrator="${xmlName[integrator]}" cone="${cone}"/><worldbody>`;
+  if (c.ground) xml += `<geom name="ground" type="plane" size="0 0 1" euler="0 ${text(c.slope)} 0"${surface}/>`;
+  for (const b of c.bodies) {
+    xml += `<body><freejoint/><inertial pos="0 0 0" mass="${text(b.mass)}" diaginertia="${vec(b.inertia)}"/>`;
+    if (b.shape === 'box') xml += `<geom type="box" size="${vec(b.size)}"${surface}/>`;
+    else if (b.shape === 'sphere') xml += `<geom type="sphere" size="${text(b.size[0])}"${surface}/>`;
+    else if (b.shape === 'cylinder') xml += `<geom type="cylinder" size="${vec(b.size.slice(0, 2))}" euler="${vec([-Math.PI / 2, 0, 0])}"${surface}/>`;
+    else throw new Refused(`this client builds no ${b.shape} geom`);
+    xml += '</body>';
+  }
+  return xml + '</worldbody></mujoco>';
+}
+
 /** The MJCF of a scenario. */
 function mjcf(s, integrator) {
   const option = `<compiler angle="radian"/><option timestep="0.01" gravity="0 0 ${text(-s.gravity)}" integrator="${xmlName[integrator]}"/>`;
@@ -124,8 +156,13 @@ class Run {
     const s = scenarioOf(scenario);
     this.s = s;
     this.dexp = integrator === 'RK4/dexp_corrected';
-    const base = this.dexp ? 'RK4' : integrator;
+    const elliptic = integrator === 'Euler/elliptic';
+    const base = this.dexp ? 'RK4' : elliptic ? 'Euler' : integrator;
     if (!(base in xmlName)) throw new Refused(`no integrator ${integrator}`);
+    if (s.structure === 'contact' && !declared.find((i) => i.name === integrator)?.contact)
+      throw new Refused(`${integrator} builds no contact scenario (Euler and Euler/elliptic do)`);
+    if (elliptic && s.structure !== 'contact')
+      throw new Refused('a friction cone changes nothing without contact: contact scenarios only');
     this.forced = s.central !== 0 || s.gravitation !== 0;
     if (this.forced && base === 'RK4')
       throw new Refused(
@@ -134,11 +171,17 @@ class Run {
       );
     if (s.central !== 0 && (s.structure !== 'one_body' || s.joint !== 'free'))
       throw new Refused('the central force is applied to a free body only');
-    this.m = mj.MjModel.from_xml_string(mjcf(s, base));
+    this.m = mj.MjModel.from_xml_string(s.structure === 'contact' ? mjcfContact(s, base, elliptic ? 'elliptic' : 'pyramidal') : mjcf(s, base));
     this.d = new mj.MjData(this.m);
     this.velocity = new mj.DoubleBuffer(6);
     const d = this.d;
-    if (s.structure === 'chain') {
+    if (s.structure === 'contact') {
+      s.contact.bodies.forEach((b, k) => {
+        const r = b.rotation0, w = b.omega0;
+        d.qpos.set([...b.position0, ...quaternion(r)], 7 * k);
+        d.qvel.set([...b.velocity0, ...[0, 1, 2].map((i) => r[i] * w[0] + r[3 + i] * w[1] + r[6 + i] * w[2])], 6 * k);
+      });
+    } else if (s.structure === 'chain') {
       s.links.forEach((l, k) => {
         d.qpos[k] = l.angle0;
         d.qvel[k] = l.rate0;
@@ -267,6 +310,19 @@ const declared = integrators.map((i) => ({
     `declared order ${i.order}${i.name === 'RK4' ? ' (the name)' : ' (a first-order method by its description)'}`,
   claims: { order: i.order },
 }));
+// The default integrator and cone meet contact; the elliptic cone on it, contact only. The
+// claims: MuJoCo's documentation (the C++ adapter's contact_claims_of).
+const contactWords =
+  'MuJoCo XML reference, option/cone: "[pyramidal, elliptic], \'pyramidal\'. The type of contact friction cone. ' +
+  'Elliptic cones are a better model of the physical reality, but pyramidal cones sometimes make the solver faster ' +
+  'and more robust."; the contacts are soft constraints (solref, solimp); no restitution coefficient (a bounce ' +
+  "through solref's damping ratio)";
+declared[0].contact = { friction_cone: 'pyramidal', newton_restitution: false, soft: true, words: `${contactWords}; the default cone` };
+declared.push({
+  name: 'Euler/elliptic',
+  origin: 'mjINT_EULER with <option cone="elliptic"/>: the contact scenarios only',
+  contact: { friction_cone: 'elliptic', newton_restitution: false, soft: true, only: true, words: `${contactWords}; cone="elliptic" set` },
+});
 declared.push({
   name: 'RK4/dexp_corrected',
   origin:

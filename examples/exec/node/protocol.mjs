@@ -35,13 +35,15 @@ export function frame(rotation, position, velocity, omega) {
 }
 
 /** The scenario of a "start" with its numbers read (the parent writes them as decimal
- * strings of 17 significant digits, which Number() reads exactly), recursively. */
+ * strings of 17 significant digits, which Number() reads exactly), recursively; its names
+ * (a contact body's shape among them) and flags (contact.ground) as they are. */
 export function scenarioOf(s) {
   const out = {};
   for (const [k, v] of Object.entries(s)) {
     if (Array.isArray(v)) out[k] = v.map((x) => (typeof x === 'object' ? scenarioOf(x) : Number(x)));
     else if (v !== null && typeof v === 'object') out[k] = scenarioOf(v);
-    else out[k] = k === 'name' || k === 'structure' || k === 'joint' ? v : Number(v);
+    else if (typeof v === 'boolean' || ['name', 'structure', 'joint', 'shape'].includes(k)) out[k] = v;
+    else out[k] = Number(v);
   }
   return out;
 }

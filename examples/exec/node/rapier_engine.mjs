@@ -11,7 +11,8 @@
 //
 // The scenario's model: a dynamic RigidBody per body, its mass and principal moments given by
 // setAdditionalMassProperties with the centre of mass at the body's origin (so translation()
-// and linvel() are the centre of mass's), no collider (nothing collides and nothing adds mass),
+// and linvel() are the centre of mass's), no collider (nothing collides and nothing adds mass;
+// in a contact scenario a collider of the body's shape and density 0, and a HalfSpace ground),
 // damping set to 0 (Rapier's defaults are 0 too) and sleeping off (setCanSleep(false): a slow
 // body would otherwise be frozen); gravity as the World's; the central force and the mutual
 // gravitation set by addForce before each step (Rapier applies a body's forces once a step).
@@ -45,10 +46,32 @@ function rotationOf({ x, y, z, w }) {
 // (rapier's source: `params.dt /= num_solver_iterations`), which the free bodies' reports
 // show. The others set nothing the scenarios use (contacts, continuous collision detection,
 // soft bodies).
+// Contact (the contact scenarios) in the default integrator: the claims are the user guide's
+// words (rapier.rs, "Colliders", Friction and Restitution) and setRestitution's. The friction
+// is bounded in magnitude by mu times the normal force (an isotropic cone); the restitution's
+// documentation fixes its ends (0: no bounce; 1: the exit normal velocity of the entry's
+// magnitude), not the law between them: no restitution law is claimed. Nothing calls the
+// contact soft (its penetration is corrected over steps: contact_erp, "the proportion of the
+// positional error to be corrected at each time step (default: 0.2)").
+const contact = {
+  friction_cone: 'elliptic',
+  words:
+    'rapier.rs user guide, Colliders, Friction: "Following the Coulomb friction model, the maximum magnitude of this ' +
+    'force is the magnitude of the force along the contact normal multiplied by a friction coefficient", "Rapier does ' +
+    'not make any distinction between the fixed and dynamic friction coefficients currently"; Restitution: "A ' +
+    'restitution coefficient set to 1 (fully elastic contact) implies that the exit velocity at a contact has the same ' +
+    'magnitude as the entry velocity along the contact normal"; ColliderDesc.setRestitution: "A value of 0 (the ' +
+    'default) means no bouncing behavior while 1 means perfect bouncing (though energy may still be lost due to ' +
+    'numerical errors of the constraints solver)"',
+};
 const integrators = [
   {
     name: 'impulse_joints',
-    origin: 'World.step with the joints as ImpulseJoints (world.createImpulseJoint), numSolverIterations = 4 (the default)',
+    origin:
+      'World.step with the joints as ImpulseJoints (world.createImpulseJoint), numSolverIterations = 4 (the default); ' +
+      'contact: colliders of the body shapes and a HalfSpace ground, friction and restitution CoefficientCombineRule.Average ' +
+      '(every collider the scenario\'s mu and e), its other IntegrationParameters at their defaults',
+    contact,
   },
   { name: 'impulse_joints_16_iterations', origin: 'the same with World.numSolverIterations = 16' },
 ];
@@ -59,6 +82,8 @@ class Run {
     if (!Object.hasOwn(solverIterations, integrator)) throw new Refused(`no integrator ${integrator}`);
     const iterations = solverIterations[integrator];
     const s = scenarioOf(scenario);
+    if (s.structure === 'contact' && !integrators.find((i) => i.name === integrator).contact)
+      throw new Refused(`${integrator} builds no contact scenario`);
     this.s = s;
     const world = new RAPIER.World(v3([0, 0, -s.gravity]));
     world.numSolverIterations = iterations;
@@ -98,6 +123,27 @@ class Run {
       });
       if (s.loop)
         joint(RAPIER.JointData.revolute(v3(sub(s.loop.point, parentCom)), v3(s.loop.anchor), v3([0, 1, 0])), parent, ground);
+    } else if (s.structure === 'contact') {
+      const c = s.contact;
+      const material = (desc) =>
+        desc
+          .setFriction(c.mu)
+          .setRestitution(c.restitution)
+          .setFrictionCombineRule(RAPIER.CoefficientCombineRule.Average)
+          .setRestitutionCombineRule(RAPIER.CoefficientCombineRule.Average);
+      if (c.ground) world.createCollider(material(new RAPIER.ColliderDesc(new RAPIER.HalfSpace(v3(c.normal)))), ground);
+      for (const b of c.bodies) {
+        const rb = body(b.mass, b.inertia, b.rotation0, b.position0, b.velocity0, b.omega0);
+        this.bodies.push(rb);
+        const [r, y, z] = b.size;
+        // A cylinder's axis is Rapier's y, the scenario's too; the colliders add no mass (density 0).
+        const shape = b.shape === 'box' ? RAPIER.ColliderDesc.cuboid(r, y, z)
+          : b.shape === 'sphere' ? RAPIER.ColliderDesc.ball(r)
+          : b.shape === 'cylinder' ? RAPIER.ColliderDesc.cylinder(y, r)
+          : null;
+        if (!shape) throw new Refused(`Rapier ${version}: no ${b.shape} shape`);
+        world.createCollider(material(shape).setDensity(0), rb);
+      }
     } else {
       for (const l of s.links) this.bodies.push(body(l.mass, l.inertia, [1, 0, 0, 0, 1, 0, 0, 0, 1], l.position0, l.velocity0, [0, 0, 0]));
     }

@@ -129,6 +129,12 @@ std::optional<double> number_value(std::string_view s);
 struct integrator_fields {
   std::string name, origin;
   claims declared;
+  /// "contact": the integrator builds contact scenarios, and what the engine documents of
+  /// its contact (its friction cone, a restitution documented as Newton's, a soft contact).
+  std::optional<contact_claims> contact;
+  /// "contact": {"only": true}: a setting of the engine's contact alone (a friction cone),
+  /// which the other studies skip.
+  bool contact_only = false;
 };
 
 /// A handshake's fields (docs/protocol.md).

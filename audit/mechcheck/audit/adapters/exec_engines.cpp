@@ -21,7 +21,14 @@ using exec_protocol::number_text;
 using exec_protocol::number_value;
 
 const char* structure_name(body_structure b) {
-  return b == body_structure::one_body ? "one_body" : b == body_structure::chain ? "chain" : "free_bodies";
+  switch (b) {
+    case body_structure::one_body: return "one_body";
+    case body_structure::chain: return "chain";
+    case body_structure::free_bodies: return "free_bodies";
+    case body_structure::robot: return "robot";
+    case body_structure::contact: return "contact";
+  }
+  return "?";
 }
 const char* joint_name(joint_kind j) {
   return j == joint_kind::free ? "free" : j == joint_kind::hinge_y ? "hinge_y" : "ball";
@@ -31,7 +38,11 @@ json vector_json(const Eigen::Vector3d& v, bool decimal) { return numbers_json(v
 
 /// Frames in a reading: one for a one-body scenario, one a link otherwise; joint
 /// coordinates: one a hinge (a chain's links, a one-body hinge), none otherwise.
-std::size_t frames_of(const scenario& s) { return s.structure == body_structure::one_body ? 1 : s.links.size(); }
+std::size_t frames_of(const scenario& s) {
+  return s.structure == body_structure::one_body  ? 1
+         : s.structure == body_structure::contact ? s.contact->bodies.size()
+                                                  : s.links.size();
+}
 std::size_t hinges_of(const scenario& s) {
   return s.structure == body_structure::chain                                        ? s.links.size()
          : s.structure == body_structure::one_body && s.joint == joint_kind::hinge_y ? 1
@@ -97,9 +108,9 @@ body_reading reading_of(simdjson::dom::element e, const scenario& s, const std::
     static_cast<body_frame&>(out) = frame_of(x, what + ": \"frame\"");
   } else {
     simdjson::dom::array links;
-    if (r["links"].get_array().get(links) || links.size() != s.links.size())
+    if (r["links"].get_array().get(links) || links.size() != frames_of(s))
       throw exec_error(what + ": a reading of " + s.name + " has \"links\", one frame each of its " +
-                       std::to_string(s.links.size()) + " bodies");
+                       std::to_string(frames_of(s)) + " bodies");
     std::size_t k = 0;
     for (simdjson::dom::element l : links) {
       const std::string name = what + ": \"links\"[" + std::to_string(k++) + "]";
@@ -363,6 +374,8 @@ exec_engine_target exec_engine(const std::vector<std::string>& command, const ex
     e.declared = i.declared;
     e.epsilon = h.epsilon;
     e.multibody = true;  // the child refuses what it cannot build
+    e.contact = i.contact;
+    e.contact_only = i.contact_only;
     const std::string name = i.name;
     e.start = [s, name](const scenario& sc) -> std::unique_ptr<engine_run> {
       return std::make_unique<exec_engine_run>(s, name, sc);
@@ -450,6 +463,27 @@ std::string scenario_json(const scenario& s, bool decimal) {
                      {"velocity0", vector_json(l.velocity0, decimal)}});
   j["links"] = links;
   if (s.loop) j["loop"] = {{"point", vector_json(s.loop->point, decimal)}, {"anchor", vector_json(s.loop->anchor, decimal)}};
+  if (s.contact) {
+    const contact_setup& c = *s.contact;
+    json bodies = json::array();
+    for (const contact_body& b : c.bodies) {
+      const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> rb = b.rotation0;
+      bodies.push_back({{"shape", contact_shape_name(b.shape)},
+                        {"size", vector_json(b.size, decimal)},
+                        {"mass", num(b.mass)},
+                        {"inertia", vector_json(b.inertia, decimal)},
+                        {"rotation0", numbers_json(rb.data(), 9, decimal)},
+                        {"position0", vector_json(b.position0, decimal)},
+                        {"velocity0", vector_json(b.velocity0, decimal)},
+                        {"omega0", vector_json(b.omega0, decimal)}});
+    }
+    j["contact"] = {{"ground", c.ground},
+                    {"slope", num(c.slope)},
+                    {"normal", vector_json(c.normal(), decimal)},
+                    {"mu", num(c.mu)},
+                    {"restitution", num(c.restitution)},
+                    {"bodies", bodies}};
+  }
   return j.dump();
 }
 }  // namespace exec_protocol

@@ -130,6 +130,9 @@ struct contact_trend {
   /// nothing: the error does not converge as h -> 0 (its limit is `limit`).
   std::optional<double> order;
   double limit = 0;          ///< the error at the finest h
+  /// What rounding can leave at the finest h: max(1e-6, n epsilon), n its steps, epsilon the
+  /// engine's arithmetic's; a limit below it is not a failure to converge.
+  double floor = 1e-6;
   double at_default = 0;     ///< the error at h = 1/60
   std::string words;         ///< "first order (0.98)", "does not converge: 0.31 at every h"
 };

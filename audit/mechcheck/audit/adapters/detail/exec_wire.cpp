@@ -175,6 +175,30 @@ claims claims_of(const json& object, const std::string& what) {
     }
   return out;
 }
+
+/// An integrator's "contact": the claims of its contact, each absent where the engine's
+/// documentation is silent, and whether the integrator is a contact setting alone ("only").
+contact_claims contact_claims_of(const json& c, const std::string& what, bool& only) {
+  if (!c.is_object()) throw exec_error(what + ": \"contact\" must be an object");
+  only_known_fields(c, {"friction_cone", "newton_restitution", "soft", "only", "words"}, what + ": contact");
+  contact_claims out;
+  if (const auto f = c.find("friction_cone"); f != c.end()) {
+    if (*f != "elliptic" && *f != "pyramidal" && *f != "box")
+      throw exec_error(what + ": contact.friction_cone must be \"elliptic\", \"pyramidal\" or \"box\", got " + excerpt_json(*f));
+    out.friction_cone = f->get<std::string>();
+  }
+  for (const auto& [key, flag] : {std::pair{"newton_restitution", &out.newton_restitution}, std::pair{"soft", &out.soft}})
+    if (const auto v = c.find(key); v != c.end()) {
+      if (!v->is_boolean()) throw exec_error(what + ": contact." + key + " must be true or false");
+      *flag = v->get<bool>();
+    }
+  out.words = text_of(c, "words", what + ": contact", false);
+  if (const auto o = c.find("only"); o != c.end()) {
+    if (!o->is_boolean()) throw exec_error(what + ": contact.only must be true or false");
+    only = o->get<bool>();
+  }
+  return out;
+}
 }  // namespace
 
 exec_protocol::handshake_fields handshake_of(const json& h, std::string_view kind) {
@@ -238,9 +262,11 @@ exec_protocol::handshake_fields handshake_of(const json& h, std::string_view kin
       if (!i.is_object()) throw exec_error(what + ": an integrator is not an object: " + excerpt_json(i));
       exec_protocol::integrator_fields f;
       f.name = name_of(i, "name", what + ": an integrator");
-      only_known_fields(i, {"name", "origin", "claims"}, what + ": integrator " + f.name);
+      only_known_fields(i, {"name", "origin", "claims", "contact"}, what + ": integrator " + f.name);
       f.origin = text_of(i, "origin", what + ": integrator " + f.name, false);
       f.declared = claims_of(i, what + ": integrator " + f.name);
+      if (const auto c = i.find("contact"); c != i.end())
+        f.contact = contact_claims_of(*c, what + ": integrator " + f.name, f.contact_only);
       for (const auto& g : out.integrators)
         if (g.name == f.name) throw exec_error(what + ": integrator \"" + f.name + "\" is listed twice");
       out.integrators.push_back(std::move(f));
