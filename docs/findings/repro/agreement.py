@@ -316,6 +316,11 @@ CHECKS = [
     measure_pair("bullet-contact", "Bullet 3.24: the creep rate over the second half", "bullet_contact",
                  "slope_creep_rate", "bullet::gyroscopic_implicit_body", "contact_slope_stick",
                  "creep rate (second half)", "contact-bullet/contact.json"),
+    # cannon-es's contact: the same world, start and arithmetic: 1e-6 relative.
+    ("cannon-contact", "cannon-es 0.20.0: the box's displacement in 1 s from the audit's start, at h = 1/60 to 1/960 (m)",
+     lambda: [repro("cannon_contact", f"box_start_displacement_n{n}") for n in (60, 120, 240, 480, 960)],
+     lambda: contact_series("exec::cannon_es::World.step", "contact_slide", "stopping distance",
+                            "contact-cannon/contact.json"), 1e-6, True),
     # DART's contact: the same worlds, starts and arithmetic, at h = 1/60 and 1/960: 1e-6 relative.
 ] + [
     ("dart-contact", f"DART 6.12.1 ({which}): {what} at h = 1/60 and 1/960",
