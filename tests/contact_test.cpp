@@ -186,11 +186,15 @@ TEST(contact, random_cases_confirm_the_exact_engine_and_shrink_a_pyramid_and_a_c
   EXPECT_LT(exact.cases->mass_and_size, 1e-12);
   EXPECT_EQ(verdict_of(exact, "random cases").result, outcome::confirmed) << verdict_of(exact, "random cases").measured;
 
-  const audit::contact_audit pyramid = audit::audit_contact(exact_contact_engine(variant::pyramid), opt);
+  // The command that finds the case again carries what brings the engine to it (an exec
+  // child's command line).
+  audit::engine_integrator served = exact_contact_engine(variant::pyramid);
+  served.command_arguments = "--exec-engine -- node engine.mjs";
+  const audit::contact_audit pyramid = audit::audit_contact(served, opt);
   ASSERT_TRUE(pyramid.cases);
   EXPECT_EQ(pyramid.cases->property, "isotropy");
   EXPECT_EQ(verdict_of(pyramid, "random cases").result, outcome::contradicted);
-  for (const char* shrunk : {"psi 0 deg", "mass 0.01 kg", "seed 3", "--contact-cases 40 --seed 3"})
+  for (const char* shrunk : {"psi 0 deg", "mass 0.01 kg", "seed 3", "--contact-cases 40 --seed 3 --exec-engine -- node engine.mjs finds"})
     EXPECT_NE(pyramid.cases->counterexample.find(shrunk), std::string::npos) << shrunk << " in " << pyramid.cases->counterexample;
   EXPECT_EQ(pyramid.cases->model_extension, "json");
   EXPECT_NE(pyramid.cases->model.find("\"scenario\": \"contact_slide\""), std::string::npos) << pyramid.cases->model;

@@ -672,7 +672,7 @@ TEST(dynamics_audit, a_disagreement_on_a_users_robot_prints_a_command_that_runs_
   const audit::dynamics_campaign c =
       audit::run_dynamics_on(wrong_library([](rb::robot& x) { x.links.back().body->mass *= 2; }), r, opt);
   ASSERT_FALSE(c.disagreement.empty());
-  EXPECT_NE(c.disagreement.find("(mechcheck-audit --urdf 'my arm.urdf' --robots 3 --seed 7 --dynamics wrong finds"),
+  EXPECT_NE(c.disagreement.find("(mechcheck-audit -o dynamics-case --urdf 'my arm.urdf' --robots 3 --seed 7 --dynamics wrong finds"),
             std::string::npos) << c.disagreement;
 }
 

@@ -374,6 +374,7 @@ exec_engine_target exec_engine(const std::vector<std::string>& command, const ex
     e.declared = i.declared;
     e.epsilon = h.epsilon;
     e.multibody = true;  // the child refuses what it cannot build
+    e.command_arguments = "--exec-engine -- " + command_text(command);
     e.contact = i.contact;
     e.contact_only = i.contact_only;
     const std::string name = i.name;

@@ -101,7 +101,7 @@ dynamics_campaign campaign(const std::string& name, const std::string& origin, c
           << "\n  seed " << opt.seed << ", "
           << (user ? std::to_string(opt.robots) + " states of robot " + user->name
                    : std::to_string(opt.robots) + " robots of at most " + std::to_string(opt.max_links) + " links")
-          << " (mechcheck-audit "
+          << " (mechcheck-audit -o dynamics-case "
           << (!user ? std::string() : "--urdf " + (opt.urdf_file.empty() ? std::string("<its URDF>") : shell_word(opt.urdf_file)) + " ") << "--robots " << opt.robots << " --seed "
           << opt.seed << " " << (selector.empty() ? "--dynamics " + name : selector) << " finds and shrinks it again)";
         c.disagreement = s.str();

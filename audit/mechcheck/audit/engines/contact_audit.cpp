@@ -614,11 +614,11 @@ contact_cases run_cases(const engine_integrator& in, const contact_options& opt)
     if (!failure.empty()) {
       broken = "a run failed", size = failure;
     } else if (out.isotropy_checked && isotropy > resolution) {
-      broken = "isotropy", size = "the stopping distance " + fmt(d_turned) + " of v0^2/(2 mu g) against " + fmt(d_plain) +
-                                  " at theta = psi = 0";
+      broken = "isotropy", size = "the stopping distance " + fmt(d_turned, "%.6g") + " of v0^2/(2 mu g) against " +
+                                  fmt(d_plain, "%.6g") + " at theta = psi = 0";
     } else if (mass_and_size > resolution) {
       broken = "independence of mass and size", shown = &plain;
-      size = "the stopping distance " + fmt(d_plain) + " of v0^2/(2 mu g) against " + fmt(d_reference) +
+      size = "the stopping distance " + fmt(d_plain, "%.6g") + " of v0^2/(2 mu g) against " + fmt(d_reference, "%.6g") +
              " for 1 kg and half-edge 0.1 m";
     } else if (out.creep_checked && creep > creep_limit) {
       broken = "no creep", shown = &stick, size = "creeps at " + fmt(creep) + " m/s";
@@ -627,8 +627,9 @@ contact_cases run_cases(const engine_integrator& in, const contact_options& opt)
     failed = true;
     out.property = broken;
     out.counterexample = broken + ": " + d.words() + ": " + size + " (h = 1/60; seed " + std::to_string(opt.seed) +
-                         ", mechcheck-audit --engine '" + in.name + "' --scenario contact_slide --contact-cases " +
-                         std::to_string(opt.cases) + " --seed " + std::to_string(opt.seed) + " finds and shrinks it again)";
+                         ", mechcheck-audit -o contact-case --engine '" + in.name + "' --scenario contact_slide --contact-cases " +
+                         std::to_string(opt.cases) + " --seed " + std::to_string(opt.seed) +
+                         (in.command_arguments.empty() ? "" : " " + in.command_arguments) + " finds and shrinks it again)";
     out.model = in.contact_model ? in.contact_model(*shown) : setup_json(*shown, h);
     out.model_extension = in.contact_model ? in.contact_model_extension : "json";
     RC_FAIL(out.counterexample);

@@ -148,6 +148,9 @@ struct engine_integrator {
   /// case's counterexample; without it the setup is written as JSON.
   std::function<std::string(const scenario&)> contact_model;
   std::string contact_model_extension;
+  /// The arguments that bring this integrator to mechcheck-audit besides --engine (an exec
+  /// child's "--exec-engine -- COMMAND"), for the commands a report prints to find a case again.
+  std::string command_arguments;
   /// The adapter builds robot scenarios (body_structure::robot: trees of revolute and
   /// prismatic joints from a robots::robot, read back in its joint coordinates); without it
   /// they are refused before start is called.
