@@ -30,6 +30,8 @@
 //                               falls under 1e-3 v0, and ball_rolling_exact, Coulomb's
 //                               v0 k / ((1 + k) mu g) for the moment k m r^2 cannon-es gives
 //                               the body (its bounding box's: k = 2/3, Body.inertia)
+//   box_fixed_rotation_loss_over_mu_g_h  the box's first-step loss with its rotation fixed
+//   box_loss_mu_0.05, box_loss_mu_1  the box's first-step loss (m/s) at mu = 0.05 and 1
 //   bound_multiplier_over_max_force  the box, its rotation fixed (Body.fixedRotation), sent
 //                               at 50 m/s: the largest |multiplier| / maxForce of its friction
 //                               equations in the first step (1 if the force is bounded by
@@ -46,7 +48,8 @@ import { pathToFileURL } from 'node:url';
 
 const CANNON = await import(pathToFileURL(process.argv[2]).href);
 const version = JSON.parse(readFileSync(join(dirname(process.argv[2]), '..', 'package.json'))).version;
-const mu = 0.5, g = 9.81, v0 = 2;
+const g = 9.81, v0 = 2;
+let mu = 0.5;
 
 /** The body (box or ball) settled for `settle` s at step h, then sent along (cos t, sin t). */
 function sent(ball, theta, h, settle = 1) {
@@ -93,14 +96,17 @@ function ball(h) {
 }
 
 /** The box, its rotation fixed, sent at `speed`: the largest |multiplier| / maxForce of its
- * friction equations in its first step. */
+ * friction equations in its first step, and its speed lost. */
 function bound(speed, h) {
   const { w, b } = sent(false, 0, h);
   b.fixedRotation = true;
   b.updateMassProperties();
   b.velocity.set(speed, 0, 0);
   w.step(h);
-  return Math.max(...w.frictionEquations.map((e) => Math.abs(e.multiplier) / e.maxForce));
+  return {
+    ratio: Math.max(...w.frictionEquations.map((e) => Math.abs(e.multiplier) / e.maxForce)),
+    loss: speed - Math.hypot(b.velocity.x, b.velocity.y),
+  };
 }
 
 const h = 1 / 60;
@@ -114,7 +120,13 @@ console.log(`box_points ${axis.points}`);
 console.log(`ball_loss_over_mu_g_h ${rolling.loss / (mu * g * h)}`);
 console.log(`ball_rolling_at ${rolling.at}`);
 console.log(`ball_rolling_exact ${rolling.exact}`);
-console.log(`bound_multiplier_over_max_force ${bound(50, h)}`);
+console.log(`box_fixed_rotation_loss_over_mu_g_h ${bound(v0, h).loss / (mu * g * h)}`);
+for (const m of [0.05, 1]) {
+  mu = m;
+  console.log(`box_loss_mu_${m} ${box(0, h).loss}`);
+}
+mu = 0.5;
+console.log(`bound_multiplier_over_max_force ${bound(50, h).ratio}`);
 console.log(`box_distance_240 ${box(0, 1 / 240).distance}`);
 for (const n of [60, 120, 240, 480, 960]) {
   const start = sent(false, 0, 1 / n, 0);

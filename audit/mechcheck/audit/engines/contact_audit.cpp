@@ -304,8 +304,8 @@ using outcome = verdict::outcome;
 
 /// How far a soft contact's pose may move an isotropic cone's stopping distance before the
 /// spread is the cone's, not the softness's: 0.05 of v0^2/(2 mu g). A pyramid of n friction
-/// directions spreads it by 1 - cos(pi / (2n)): 0.293 for two (ODE's, MuJoCo's), 0.076 for
-/// four; the largest spread a documented soft, elliptic contact has shown is 7e-3 (MuJoCo's,
+/// directions, each bounded on its own, spreads it by 1 - cos(pi / (2n)): 0.293 for two
+/// (ODE's), 0.076 for four (MuJoCo's pyramid, built otherwise, spreads it by 0.412); the largest spread a documented soft, elliptic contact has shown is 7e-3 (MuJoCo's,
 /// a 0.03 m box of 0.01 kg among the random cases). A cone of eight or more directions is not
 /// resolved from a soft contact's pose.
 constexpr double soft_pose_spread = 0.05;
