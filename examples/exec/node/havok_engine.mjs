@@ -59,7 +59,10 @@ const inBody = (r, x) => [0, 1, 2].map((j) => r[j] * x[0] + r[3 + j] * x[1] + r[
 const integrators = [
   {
     name: 'step',
-    origin: 'HP_World_Step with the ideal step time set to h',
+    origin:
+      'HP_World_Step with the ideal step time set to h; contact: a shape a body (box, sphere, cylinder), the ground a ' +
+      'static box 200 m wide whose top face is the plane, every shape the material [mu, mu, e] combined by MINIMUM ' +
+      '(every pair mu and e), damping 0, ALWAYS_ACTIVE, the solver at its defaults',
     // HavokPhysics.d.ts names a material's fields and nothing of how they act: no claim.
     contact: {
       words:

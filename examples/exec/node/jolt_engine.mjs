@@ -36,7 +36,9 @@ const integrators = [
   {
     name: 'default',
     origin:
-      "BodyCreationSettings.mApplyGyroscopicForce = false (Jolt's default); contact: PhysicsSettings at their defaults " +
+      "BodyCreationSettings.mApplyGyroscopicForce = false (Jolt's default); contact: BoxShape, SphereShape, CylinderShape " +
+      '(convex radius 0) and a static PlaneShape ground, every body mFriction mu and mRestitution e (combined by the ' +
+      "geometric mean and the maximum, Jolt's defaults: every pair mu and e), damping 0, sleeping off; PhysicsSettings at their defaults " +
       '(mMinVelocityForRestitution 1 m/s: "Minimal velocity needed before a collision can be elastic", ' +
       'mPenetrationSlop 0.02, mBaumgarte 0.2, mSpeculativeContactDistance 0.02)',
     // BodyCreationSettings.h's words: friction and restitution coefficients, their ends

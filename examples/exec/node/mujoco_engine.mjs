@@ -318,9 +318,15 @@ const contactWords =
   'and more robust."; the contacts are soft constraints (solref, solimp); no restitution coefficient (a bounce ' +
   "through solref's damping ratio)";
 declared[0].contact = { friction_cone: 'pyramidal', newton_restitution: false, soft: true, words: `${contactWords}; the default cone` };
+// How the contact scenarios are built (mjcfContact), said in the origin of both integrators that build them.
+const contactBuild =
+  'contact: a plane geom ground and a geom a free body, friction "mu 0 0" and condim 3 on every geom (MuJoCo takes ' +
+  "the larger of two: every pair mu), e > 0 as solref's damping ratio at the default time constant 0.02 s, solimp, " +
+  'impratio and the solver at their defaults';
+declared[0].origin += `; ${contactBuild} (the default cone, pyramidal)`;
 declared.push({
   name: 'Euler/elliptic',
-  origin: 'mjINT_EULER with <option cone="elliptic"/>: the contact scenarios only',
+  origin: `mjINT_EULER with <option cone="elliptic"/>: the contact scenarios only; ${contactBuild}`,
   contact: { friction_cone: 'elliptic', newton_restitution: false, soft: true, only: true, words: `${contactWords}; cone="elliptic" set` },
 });
 declared.push({
