@@ -1,6 +1,8 @@
 #include "mechcheck/audit/adapters/simbody.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <string>
 
@@ -51,9 +53,87 @@ std::string one_line(const char* text) {
   return out.size() > 240 ? out.substr(0, 240) + "..." : out;
 }
 
+/// The contact entry (contact.hpp): RungeKuttaMerson error-controlled at this accuracy,
+/// reporting every h; the materials' stiffness: a sphere's in Pa (Hertz's contact: a 0.1 kg
+/// ball of 0.05 m rests 1e-4 m deep), a brick's in N/m at each vertex in contact
+/// (BrickHalfSpacePenalty: two surfaces' in series, a 1 kg box rests 5e-6 m deep).
+constexpr double contact_accuracy = 1e-6;
+constexpr double sphere_stiffness = 1e7, brick_stiffness = 1e6;
+constexpr const char* contact_name = "simbody::RungeKuttaMerson/contact";
+std::string short_number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", x);
+  return text;
+}
+
+/// The speed of a contact scenario's first impact: a body falling onto the ground (its
+/// normal speed after falling its gap), two bodies closing along their centres' line; 0 where
+/// the start has none.
+double impact_speed(const scenario& s) {
+  const contact_setup& c = *s.contact;
+  const Eigen::Vector3d n = c.normal();
+  double v = 0;
+  for (std::size_t i = 0; i < c.bodies.size(); ++i) {
+    const contact_body& b = c.bodies[i];
+    if (c.ground) {
+      const Eigen::Vector3d n_body = b.rotation0.transpose() * n;  // the support along -n
+      const double reach = b.shape == contact_shape::sphere ? b.size(0) : n_body.cwiseAbs().dot(b.size);
+      const double gap = std::max(0.0, b.position0.dot(n) - reach), falling = std::max(0.0, -b.velocity0.dot(n));
+      v = std::max(v, std::sqrt(falling * falling + 2 * s.gravity * n(2) * gap));
+    }
+    for (std::size_t j = i + 1; j < c.bodies.size(); ++j) {
+      const Eigen::Vector3d d = (c.bodies[j].position0 - b.position0).normalized();
+      v = std::max(v, -(c.bodies[j].velocity0 - b.velocity0).dot(d));
+    }
+  }
+  return v;
+}
+
+/// A contact scenario in the bridge's terms, or refused by name where Simbody 3.7 tracks no
+/// contact between its shapes.
+void contact_setup_of(const scenario& s, bridge::setup& b) {
+  const contact_setup& c = *s.contact;
+  for (const contact_body& k : c.bodies)
+    if (k.shape == contact_shape::cylinder)
+      throw scenario_refused(std::string(contact_name) + ": " + s.name +
+                             ": Simbody 3.7's ContactTrackerSubsystem tracks no cylinder (its trackers: HalfSpaceSphere, "
+                             "SphereSphere, HalfSpaceEllipsoid, HalfSpaceBrick, the triangle meshes', convex implicit pairs)");
+  for (std::size_t i = 0; i < c.bodies.size(); ++i)
+    for (std::size_t j = i + 1; j < c.bodies.size(); ++j)
+      if (c.bodies[i].shape != contact_shape::sphere || c.bodies[j].shape != contact_shape::sphere)
+        throw scenario_refused(std::string(contact_name) + ": " + s.name +
+                               ": Simbody 3.7's ContactTrackerSubsystem tracks a brick against a half-space only, not "
+                               "against another body");
+  b.structure = 4;
+  b.accuracy = contact_accuracy;
+  b.contact.ground = c.ground;
+  const Eigen::Vector3d n = c.normal();
+  for (int i = 0; i < 3; ++i) b.contact.normal[i] = n(i);
+  b.contact.mu = c.mu;
+  b.contact.stiffness = c.bodies.front().shape == contact_shape::box ? brick_stiffness : sphere_stiffness;
+  // Simbody's restitution at low speeds: e = 1 - c v (ContactSurface.h): c from the
+  // scenario's e at its first impact, at 1 m/s where it has none.
+  b.contact.dissipation = (1 - c.restitution) / std::max(impact_speed(s), 1.0);
+  for (const contact_body& k : c.bodies) {
+    bridge::setup::contact_body o;
+    o.shape = k.shape == contact_shape::box ? 0 : 1;
+    o.mass = k.mass;
+    for (int i = 0; i < 3; ++i) {
+      o.size[i] = k.size(i);
+      o.inertia[i] = k.inertia(i);
+      o.position0[i] = k.position0(i);
+      o.velocity0[i] = k.velocity0(i);
+      o.omega0[i] = k.omega0(i);
+      for (int j = 0; j < 3; ++j) o.rotation0[3 * i + j] = k.rotation0(i, j);
+    }
+    b.contact.bodies.push_back(o);
+  }
+}
+
 class run final : public engine_run {
  public:
-  run(const scenario& s, int integrator) : s_(s), name_(std::string("simbody::") + bridge::integrator_name(integrator)) {
+  run(const scenario& s, int integrator, bool contact = false)
+      : s_(s), name_(contact ? contact_name : std::string("simbody::") + bridge::integrator_name(integrator)) {
     bridge::setup b;
     b.integrator = integrator;
     b.joint = s.joint == joint_kind::free ? 0 : s.joint == joint_kind::hinge_y ? 1 : 2;
@@ -95,6 +175,9 @@ class run final : public engine_run {
       b.q0.assign(q.data(), q.data() + q.size());
       b.u0.assign(u.data(), u.data() + u.size());
     }
+    if (contact != (s.structure == body_structure::contact))
+      throw scenario_refused(name_ + (contact ? ": contact scenarios only" : ": contact at a fixed step is not built"));
+    if (contact) contact_setup_of(s, b);
     try {
       model_ = std::make_unique<bridge::model>(b);
     } catch (const bridge::refused& e) {
@@ -196,6 +279,34 @@ std::vector<engine_integrator> integrators() {
     e.robots = true;
     out.push_back(std::move(e));
   }
+  // Contact: the explicit integrators at a fixed step meet the contact's stiffness (a 1 kg
+  // box on its four vertices oscillates at 1.4e3 rad/s: omega h = 24 at h = 1/60, far beyond
+  // an explicit method's stability); error-controlled, RungeKuttaMerson, as Simbody's
+  // ContactBrickTest runs its brick.
+  const int merson = 3;
+  if (std::string(bridge::integrator_name(merson)) != "RungeKuttaMerson")
+    throw error("simbody adapter: integrator list out of step at " + std::to_string(merson));
+  engine_integrator e;
+  e.name = contact_name;
+  e.origin = "Simbody " + version() + " RungeKuttaMersonIntegrator error-controlled (setAccuracy(" + short_number(contact_accuracy) +
+             "), reporting every h by stepTo) with a ContactTrackerSubsystem and a CompliantContactSubsystem at its default "
+             "transition velocity 0.01 m/s; the ground a ContactGeometry::HalfSpace, the bodies a Brick or a Sphere on Free "
+             "mobilizers, every surface ContactMaterial(k, c, mu, mu, 0): k " + short_number(sphere_stiffness) + " Pa with a sphere, " +
+             short_number(brick_stiffness) + " N/m a vertex with a brick (BrickHalfSpacePenalty), c = (1 - e) / v at the "
+             "scenario's first impact speed v (1 m/s where it has none); no cylinder, no body against a brick";
+  contact_claims c;
+  c.friction_cone = "elliptic";
+  c.newton_restitution = false;
+  c.soft = true;
+  c.words = "Simbody " + version() + " ContactSurface.h, ContactMaterial: dynamicFriction \"velocity-independent tangential "
+            "force magnitude f=mu_d*N produced opposing the sliding direction\"; \"Compliant contact models respond via forces "
+            "that are generated by finite deformations of the contact surface\"; \"It is common practice, but blatantly "
+            "incorrect, to use a constant value for the coefficient of restitution ... e=1-c*v\"";
+  e.contact = c;
+  e.contact_only = true;
+  e.start = [merson](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<run>(s, merson, true); };
+  e.multibody = true;
+  out.push_back(std::move(e));
   return out;
 }
 

@@ -310,6 +310,14 @@ using outcome = verdict::outcome;
 /// resolved from a soft contact's pose.
 constexpr double soft_pose_spread = 0.05;
 
+/// The first failed run of a scenario, with its h ("" where every run completed): what
+/// a failed run measured stops at its failure, and confirms nothing.
+std::string failure_of(const contact_scenario_audit& s) {
+  for (const contact_run& r : s.runs)
+    if (!r.failure.empty()) return s.scenario + " at h = " + fmt(r.h) + " failed: " + r.failure;
+  return {};
+}
+
 /// The verdicts (contact.hpp): thresholds derived from what each study resolves.
 std::vector<verdict> judge_contact(const contact_audit& a, double u) {
   std::vector<verdict> out;
@@ -323,8 +331,8 @@ std::vector<verdict> judge_contact(const contact_audit& a, double u) {
     // gives them one distance up to rounding. 1e-3 is a thousand times single precision's
     // rounding of the distance and far below a pyramid's spread (up to 1 - 1/sqrt 2).
     const double resolution = 1e-3;
-    if (!s || s->isotropy.empty()) {
-      v.measured = "-";
+    if (!s || s->isotropy.size() < 2) {  // a spread needs two directions that ran to the end
+      v.measured = s && !s->runs.empty() ? "the sweep's runs failed" : "-";
       v.result = c.friction_cone ? outcome::not_measured : outcome::not_declared;
     } else {
       const bool isotropic = s->anisotropy <= resolution;
@@ -353,6 +361,10 @@ std::vector<verdict> judge_contact(const contact_audit& a, double u) {
     if (!s) {
       v.measured = "-";
       v.result = outcome::not_measured;
+    } else if (const std::string f = failure_of(*s); !f.empty()) {
+      v.measured = "a run failed";
+      v.evidence = f;
+      v.result = outcome::not_measured;
     } else {
       // The creep's rate over the second half of the run: a static friction that holds it
       // is zero, whatever slip the contact's first steps allowed (that transient is the
@@ -380,15 +392,20 @@ std::vector<verdict> judge_contact(const contact_audit& a, double u) {
     v.claim = "at rest";
     v.declared = c.soft ? (*c.soft ? "soft contact" : "rigid contact") : "-";
     double total = 0, late = 0;
-    std::string where;
+    std::string where, failed;
     for (const char* name : {"contact_rest", "contact_stack"})
       if (const contact_scenario_audit* s = scenario_named(a, name); s && !s->runs.empty()) {
+        if (failed.empty()) failed = failure_of(*s);
         const contact_measure* m = find(s->runs.front(), "drift, largest");
         const contact_measure* l = find(s->runs.front(), "drift in the last second");
         if (m && std::abs(m->value) >= total) total = std::abs(m->value), where = name;
         if (l) late = std::max(late, std::abs(l->value));
       }
-    if (where.empty()) {
+    if (!failed.empty()) {
+      v.measured = "a run failed";
+      v.evidence = failed;
+      v.result = outcome::not_measured;
+    } else if (where.empty()) {
       v.measured = "-";
       v.result = outcome::not_measured;
     } else {
@@ -421,6 +438,10 @@ std::vector<verdict> judge_contact(const contact_audit& a, double u) {
     if (!s) {
       v.measured = "-";
       v.result = c.newton_restitution ? outcome::not_measured : outcome::not_declared;
+    } else if (const std::string f = failure_of(*s); !f.empty()) {
+      v.measured = "a run failed";
+      v.evidence = f;
+      v.result = c.newton_restitution ? outcome::not_measured : outcome::not_declared;
     } else {
       const contact_run& fine = s->runs.back();
       const contact_measure* apex = find(fine, "apex 1");
@@ -444,10 +465,11 @@ std::vector<verdict> judge_contact(const contact_audit& a, double u) {
     // ERP, its split impulse -- pushes a penetration out and lifts the body: energy gained
     // by a mechanism the engines document, whose size is the measurement), a slide, a roll.
     double contradicting = 0, other = 0;
-    std::string where_contradicting, where_other;
+    std::string where_contradicting, where_other, failed;
     int runs = 0;
     for (const auto& s : a.scenarios) {
       if (!s.refused.empty()) continue;
+      if (failed.empty()) failed = failure_of(s);
       const bool at_rest = s.scenario == "contact_rest" || s.scenario == "contact_stack";
       const bool impact = s.scenario == "contact_bounce" || s.scenario.rfind("contact_collision", 0) == 0;
       for (const auto& r : s.runs) {
@@ -488,6 +510,10 @@ std::vector<verdict> judge_contact(const contact_audit& a, double u) {
     } else if (other > 0) {
       v.measured = "gained " + fmt(other) + " of its scale (" + where_other + ")";
       v.result = outcome::measured;
+    } else if (!failed.empty()) {  // none gained up to the failure: not a run's whole
+      v.measured = "none gained up to a failed run's failure";
+      v.evidence += "; " + failed;
+      v.result = outcome::not_measured;
     } else {
       v.measured = "none gained";
       v.result = outcome::confirmed;
@@ -498,15 +524,21 @@ std::vector<verdict> judge_contact(const contact_audit& a, double u) {
     verdict v;
     v.claim = "exact motions";
     v.declared = "Coulomb friction";
-    std::string converging, not_converging;
-    for (const auto& s : a.scenarios)
+    std::string converging, not_converging, failed;
+    for (const auto& s : a.scenarios) {
+      if (const std::string f = failure_of(s); !f.empty()) failed += f + "; ";
       for (const auto& t : s.trends) {
         if (s.scenario == "contact_slope_stick" || s.scenario == "contact_rest" || s.scenario == "contact_stack") continue;
         (t.order || t.limit < t.floor ? converging : not_converging) += s.scenario + " " + t.measure + ": " + t.words + "; ";
       }
-    v.measured = not_converging.empty() ? "every error falls with h" : "some errors do not fall with h";
-    v.evidence = not_converging + converging;
-    v.result = not_converging.empty() ? (converging.empty() ? outcome::not_measured : outcome::confirmed) : outcome::measured;
+    }
+    v.measured = !not_converging.empty() ? "some errors do not fall with h"
+                 : failed.empty()        ? "every error falls with h"
+                                         : "runs failed";
+    v.evidence = failed + not_converging + converging;
+    v.result = !not_converging.empty()                  ? outcome::measured
+               : converging.empty() || !failed.empty() ? outcome::not_measured
+                                                        : outcome::confirmed;
     out.push_back(v);
   }
   return out;

@@ -124,6 +124,12 @@ struct model::impl {
   std::unique_ptr<Integrator> integrator;
   bool started = false;
   double h = 0;
+  double accuracy = 0;  ///< setup::accuracy
+  /// Contact: the CompliantContactSubsystem keeps a reference to the tracker's handle and
+  /// its force generators a pointer to its own (not to the subsystems the system owns): both
+  /// handles live as long as the model.
+  std::unique_ptr<ContactTrackerSubsystem> tracker;
+  std::unique_ptr<CompliantContactSubsystem> compliant;
 };
 
 namespace {
@@ -169,6 +175,42 @@ void build_multibody(model&, const setup& s, SimbodyMatterSubsystem& matter, Gen
   system.realize(state, Stage::Velocity);
 }
 
+/// Contact (setup::contact_model): the ground a HalfSpace (Simbody's occupies x > 0 of its
+/// frame: the frame's x turned onto the inward normal), each body a Free mobilizer with its
+/// Brick or Sphere, every surface one material.
+void build_contact(const setup& s, SimbodyMatterSubsystem& matter, std::vector<MobilizedBody>& links, State& state,
+                   MultibodySystem& system, std::unique_ptr<ContactTrackerSubsystem>& tracker,
+                   std::unique_ptr<CompliantContactSubsystem>& compliant) {
+  const setup::contact_model& c = s.contact;
+  tracker = std::make_unique<ContactTrackerSubsystem>(system);
+  compliant = std::make_unique<CompliantContactSubsystem>(system, *tracker);
+  compliant->setTransitionVelocity(c.transition_velocity);
+  const ContactMaterial material(c.stiffness, c.dissipation, c.mu, c.mu, 0);
+  if (c.ground) {
+    const UnitVec3 inward(-c.normal[0], -c.normal[1], -c.normal[2]);
+    matter.Ground().updBody().addContactSurface(Transform(Rotation(inward, XAxis), Vec3(0)),
+                                                ContactSurface(ContactGeometry::HalfSpace(), material));
+  }
+  for (const setup::contact_body& b : c.bodies) {
+    Body::Rigid body(MassProperties(b.mass, Vec3(0), Inertia(vec(b.inertia))));
+    if (b.shape == 0)
+      body.addContactSurface(Transform(), ContactSurface(ContactGeometry::Brick(vec(b.size)), material));
+    else
+      body.addContactSurface(Transform(), ContactSurface(ContactGeometry::Sphere(b.size[0]), material));
+    links.push_back(MobilizedBody::Free(matter.updGround(), Transform(), body, Transform()));
+  }
+  state = system.realizeTopology();
+  system.realizeModel(state);
+  for (std::size_t k = 0; k < c.bodies.size(); ++k) {
+    const setup::contact_body& b = c.bodies[k];
+    const Rotation r0(Mat33(b.rotation0[0], b.rotation0[1], b.rotation0[2], b.rotation0[3], b.rotation0[4],
+                            b.rotation0[5], b.rotation0[6], b.rotation0[7], b.rotation0[8]));
+    links[k].setQToFitTransform(state, Transform(r0, vec(b.position0)));
+    links[k].setUToFitVelocity(state, SpatialVec(vec(b.omega0), vec(b.velocity0)));
+  }
+  system.realize(state, Stage::Velocity);
+}
+
 frame frame_of(const MobilizedBody& b, const State& st) {
   frame r;
   const Rotation& rot = b.getBodyRotation(st);
@@ -199,6 +241,8 @@ model::model(const setup& s) : p_(new impl) {
       m.links[k].setOneU(m.state, 0, s.u0.at(k));
     }
     m.system.realize(m.state, Stage::Velocity);
+  } else if (s.structure == 4) {
+    build_contact(s, m.matter, m.links, m.state, m.system, m.tracker, m.compliant);
   } else if (s.structure != 0) {
     build_multibody(*this, s, m.matter, m.forces, m.links, m.state, m.system);
     m.chain = s.structure == 1;
@@ -211,6 +255,8 @@ model::model(const setup& s) : p_(new impl) {
           "(N_V*, Dense*, ...) and this build also links SUNDIALS 6.4, whose definitions win");
 #endif
     m.integrator = entries().at(static_cast<std::size_t>(s.integrator)).make(m.system);
+    if (s.accuracy > 0) m.integrator->setAccuracy(s.accuracy);
+    m.accuracy = s.accuracy;
     // The loop's projection at Simbody's default constraint tolerance: the studies resolve
     // the declared orders with it (a tolerance of 1e-12 made Verlet's long run diverge).
     return;
@@ -262,7 +308,7 @@ void model::step(double h) {
   impl& m = *p_;
   // stepTo advances to a later report time only: a negative step would return at once.
   if (!(h > 0)) throw std::invalid_argument("Simbody's Integrator::stepTo only advances time (h = " + std::to_string(h) + ")");
-  if (!m.started || h != m.h) {
+  if (m.accuracy == 0 && (!m.started || h != m.h)) {
     m.integrator->setFixedStepSize(h);
     m.h = h;
   }

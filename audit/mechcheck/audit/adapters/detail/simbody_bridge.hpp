@@ -66,6 +66,26 @@ struct setup {
   /// its moving bodies; read back as joint_q and joint_u in that order.
   robot_setup robot;
   std::vector<double> q0, u0;
+  /// structure 4: bodies on a half-space ground and against each other under Simbody's
+  /// compliant contact (a ContactTrackerSubsystem and a CompliantContactSubsystem), every
+  /// surface of one ContactMaterial; each body on a Free mobilizer, read back as `links`.
+  struct contact_body {
+    int shape = 0;  ///< 0 a ContactGeometry::Brick (half-lengths size), 1 a Sphere (radius size[0])
+    double size[3] = {0, 0, 0};
+    double mass = 1, inertia[3] = {1, 1, 1};  ///< principal moments about the centre, body axes
+    double rotation0[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  ///< body to world, row-major
+    double position0[3] = {0, 0, 0}, velocity0[3] = {0, 0, 0}, omega0[3] = {0, 0, 0};
+  };
+  struct contact_model {
+    bool ground = true;
+    double normal[3] = {0, 0, 1};  ///< the ground's outward unit normal; the plane through the origin
+    double stiffness = 0, dissipation = 0, mu = 0;  ///< ContactMaterial(stiffness, dissipation, mu, mu, 0)
+    double transition_velocity = 0.01;               ///< CompliantContactSubsystem's
+    std::vector<contact_body> bodies;
+  } contact;
+  /// > 0: the integrator error-controlled at this accuracy (Integrator::setAccuracy), h the
+  /// interval at which it reports (stepTo); 0: a fixed step h (setFixedStepSize).
+  double accuracy = 0;
 };
 
 /// One body's frame.
