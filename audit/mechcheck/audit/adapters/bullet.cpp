@@ -42,6 +42,35 @@ Eigen::Matrix3d mat(const btMatrix3x3& m) {
   return r;
 }
 
+/// A contact body's collision shape: btBoxShape with the half-edges, btSphereShape,
+/// btCylinderShape (its axis Bullet's y, the body's).
+std::unique_ptr<btCollisionShape> shape_of(const contact_body& b) {
+  switch (b.shape) {
+    case contact_shape::box: return std::make_unique<btBoxShape>(bt(b.size));
+    case contact_shape::sphere: return std::make_unique<btSphereShape>(b.size(0));
+    case contact_shape::cylinder: return std::make_unique<btCylinderShape>(btVector3(b.size(0), b.size(1), b.size(0)));
+  }
+  throw error("bullet: a contact body of no known shape");
+}
+
+btTransform transform_of(const Eigen::Matrix3d& r, const Eigen::Vector3d& x) {
+  btTransform t;
+  t.setOrigin(bt(x));
+  t.setBasis(btMatrix3x3(r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0), r(2, 1), r(2, 2)));
+  return t;
+}
+
+/// The ground of a contact scenario: a static btRigidBody with a btStaticPlaneShape through
+/// the origin with the slope's normal.
+std::unique_ptr<btRigidBody> ground_of(const contact_setup& c, std::vector<std::unique_ptr<btCollisionShape>>& shapes,
+                                       double friction, double restitution) {
+  shapes.push_back(std::make_unique<btStaticPlaneShape>(bt(c.normal()), 0));
+  btRigidBody::btRigidBodyConstructionInfo info(0, nullptr, shapes.back().get());
+  info.m_friction = friction;
+  info.m_restitution = restitution;
+  return std::make_unique<btRigidBody>(info);
+}
+
 class run final : public engine_run {
  public:
   run(const scenario& s, const gyroscopic_mode& g)
@@ -171,27 +200,13 @@ class run final : public engine_run {
   void build_contact(const contact_setup& c, const gyroscopic_mode& g) {
     const double friction = std::sqrt(c.mu), restitution = std::sqrt(c.restitution);
     if (c.ground) {
-      shapes_.push_back(std::make_unique<btStaticPlaneShape>(bt(c.normal()), 0));
-      btRigidBody::btRigidBodyConstructionInfo info(0, nullptr, shapes_.back().get());
-      info.m_friction = friction;
-      info.m_restitution = restitution;
-      ground_ = std::make_unique<btRigidBody>(info);
+      ground_ = ground_of(c, shapes_, friction, restitution);
       world_->addRigidBody(ground_.get());
     }
     for (const contact_body& b : c.bodies) {
-      switch (b.shape) {
-        case contact_shape::box: shapes_.push_back(std::make_unique<btBoxShape>(bt(b.size))); break;
-        case contact_shape::sphere: shapes_.push_back(std::make_unique<btSphereShape>(b.size(0))); break;
-        case contact_shape::cylinder:
-          shapes_.push_back(std::make_unique<btCylinderShape>(btVector3(b.size(0), b.size(1), b.size(0))));
-          break;
-      }
-      btTransform start;
-      start.setOrigin(bt(b.position0));
-      const Eigen::Matrix3d& r = b.rotation0;
-      start.setBasis(btMatrix3x3(r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0), r(2, 1), r(2, 2)));
+      shapes_.push_back(shape_of(b));
       btRigidBody::btRigidBodyConstructionInfo info(b.mass, nullptr, shapes_.back().get(), bt(b.inertia));
-      info.m_startWorldTransform = start;
+      info.m_startWorldTransform = transform_of(b.rotation0, b.position0);
       info.m_linearDamping = 0;
       info.m_angularDamping = 0;
       info.m_friction = friction;
@@ -285,6 +300,10 @@ class multibody_run final : public engine_run {
     world_ = std::make_unique<btMultiBodyDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                                          config_.get());
     world_->setGravity(btVector3(0, 0, -s.gravity));
+    if (s.structure == body_structure::contact) {
+      build_contact(*s.contact);
+      return;
+    }
     if (s.structure == body_structure::chain) {
       build_chain(s);
       return;
@@ -324,6 +343,8 @@ class multibody_run final : public engine_run {
     if (loop_) world_->removeMultiBodyConstraint(loop_.get());
     for (auto& c : colliders_) world_->removeCollisionObject(c.get());
     if (body_) world_->removeMultiBody(body_.get());
+    for (auto& b : bodies_) world_->removeMultiBody(b.get());
+    if (ground_) world_->removeRigidBody(ground_.get());
   }
   multibody_run(const multibody_run&) = delete;
   multibody_run& operator=(const multibody_run&) = delete;
@@ -343,6 +364,17 @@ class multibody_run final : public engine_run {
 
   body_reading read() const override {
     body_reading r;
+    if (s_.structure == body_structure::contact) {  // each base: its centre, world-frame velocities
+      for (const auto& b : bodies_) {
+        body_frame f;
+        f.rotation = mat(btMatrix3x3(b->getWorldToBaseRot().inverse()));
+        f.position = vec(b->getBasePos());
+        f.velocity = vec(b->getBaseVel());
+        f.omega = vec(b->getBaseOmega());
+        r.links.push_back(f);
+      }
+      return r;
+    }
     if (s_.structure == body_structure::robot) {  // the joints' coordinates in the robot's order
       const Eigen::Index n = Eigen::Index(coordinate_.size());
       r.joint_q.resize(n);
@@ -431,6 +463,44 @@ class multibody_run final : public engine_run {
     }
   }
 
+  /// A contact scenario (contact.hpp): per body a btMultiBody of no links, its floating base
+  /// the body (mass, principal moments, frame at the centre; damping 0, gyroscopic term on,
+  /// the default) with a btMultiBodyLinkCollider of the body's shape as its base collider;
+  /// the ground a static btRigidBody with a btStaticPlaneShape (the btMultiBodyConstraintSolver
+  /// meets multibody against rigid body); friction and restitution sqrt(mu) and sqrt(e) on
+  /// every object, as the rigid-body world (Bullet combines them by their product).
+  void build_contact(const contact_setup& c) {
+    const double friction = std::sqrt(c.mu), restitution = std::sqrt(c.restitution);
+    if (c.ground) {
+      ground_ = ground_of(c, shapes_, friction, restitution);
+      world_->addRigidBody(ground_.get());
+    }
+    for (const contact_body& b : c.bodies) {
+      shapes_.push_back(shape_of(b));
+      bodies_.push_back(std::make_unique<btMultiBody>(0, b.mass, bt(b.inertia), false, false));
+      btMultiBody& body = *bodies_.back();
+      body.finalizeMultiDof();
+      body.setLinearDamping(0);  // the defaults are 0.04
+      body.setAngularDamping(0);
+      body.setCanSleep(false);
+      const btTransform start = transform_of(b.rotation0, b.position0);
+      body.setBaseWorldTransform(start);
+      body.setBaseVel(bt(b.velocity0));
+      body.setBaseOmega(bt(b.omega0));
+      world_->addMultiBody(&body);
+      colliders_.push_back(std::make_unique<btMultiBodyLinkCollider>(&body, -1));
+      btMultiBodyLinkCollider& collider = *colliders_.back();
+      collider.setCollisionShape(shapes_.back().get());
+      collider.setWorldTransform(start);
+      collider.setFriction(friction);
+      collider.setRestitution(restitution);
+      // btDiscreteDynamicsWorld::addCollisionObject files an object as static by default
+      // (StaticFilter, colliding with everything but static objects: not the ground).
+      world_->addCollisionObject(&collider, btBroadphaseProxy::DefaultFilter, btBroadphaseProxy::AllFilter);
+      body.setBaseCollider(&collider);
+    }
+  }
+
   /// A robot: the btMultiBody of the dynamics adapter (build_robot_multibody), the world's
   /// gravity the robot's, the start set per coordinate.
   void build_robot(const robot_start& r) {
@@ -458,6 +528,9 @@ class multibody_run final : public engine_run {
   std::unique_ptr<btMultiBodyConstraintSolver> solver_;
   std::unique_ptr<btMultiBodyDynamicsWorld> world_;
   std::unique_ptr<btMultiBody> body_;
+  std::vector<std::unique_ptr<btCollisionShape>> shapes_;  ///< a contact scenario's
+  std::vector<std::unique_ptr<btMultiBody>> bodies_;
+  std::unique_ptr<btRigidBody> ground_;
   btAlignedObjectArray<btQuaternion> scratch_q_;
   btAlignedObjectArray<btVector3> scratch_m_;
   long long steps_ = 0;
@@ -541,10 +614,17 @@ std::vector<engine_integrator> integrators() {
   m.origin = "Bullet " + version() + " (bullet-float64), btMultiBody on a fixed base (setupRevolute "
              "for a hinge, setupSpherical for a ball joint, a chain of revolute links, a loop closed by "
              "btMultiBodyPoint2Point; damping 0) in a btMultiBodyDynamicsWorld, stepSimulation(h, 0); Bullet states "
-             "no order; free bodies refused";
+             "no order; free bodies refused but a contact scenario's, each a btMultiBody of no links on a floating base "
+             "whose btMultiBodyLinkCollider is its shape (sqrt(mu) and sqrt(e) on every object, the ground a static "
+             "btRigidBody with a btStaticPlaneShape)";
   m.start = [](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<multibody_run>(s); };
   m.multibody = true;
   m.robots = true;
+  contact_claims c;  // as the rigid-body world's: Bullet's Featherstone headers name no cone either
+  c.words = "Bullet " + version() + " btMultiBodyConstraintSolver's contacts (each body a btMultiBody of no links, its "
+            "base collider its shape; the ground a static btRigidBody): btCollisionObject.h names friction and "
+            "restitution without a law; btContactSolverInfo's defaults";
+  m.contact = c;
   out.push_back(std::move(m));
   return out;
 }
