@@ -613,10 +613,11 @@ std::vector<engine_integrator> integrators() {
   m.name = multibody_run::name;
   m.origin = "Bullet " + version() + " (bullet-float64), btMultiBody on a fixed base (setupRevolute "
              "for a hinge, setupSpherical for a ball joint, a chain of revolute links, a loop closed by "
-             "btMultiBodyPoint2Point; damping 0) in a btMultiBodyDynamicsWorld, stepSimulation(h, 0); Bullet states "
-             "no order; free bodies refused but a contact scenario's, each a btMultiBody of no links on a floating base "
-             "whose btMultiBodyLinkCollider is its shape (sqrt(mu) and sqrt(e) on every object, the ground a static "
-             "btRigidBody with a btStaticPlaneShape)";
+             "btMultiBodyPoint2Point; damping 0, the default 0.04; no sleeping) in a btMultiBodyDynamicsWorld, "
+             "stepSimulation(h, 0); Bullet states no order; free bodies refused but a contact scenario's, each a "
+             "btMultiBody of no links on a floating base whose btMultiBodyLinkCollider is its shape (sqrt(mu) and "
+             "sqrt(e) on every object: Bullet combines them by their product; the ground a static btRigidBody with a "
+             "btStaticPlaneShape; the solver at its defaults)";
   m.start = [](const scenario& s) -> std::unique_ptr<engine_run> { return std::make_unique<multibody_run>(s); };
   m.multibody = true;
   m.robots = true;
