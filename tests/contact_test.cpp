@@ -216,6 +216,29 @@ TEST(contact, the_engines_adapters_give_every_pair_mu_and_e) {
   std::cout << seen << " engine integrators with contact scenarios in this build\n";
 }
 
+TEST(contact, every_engine_says_how_it_builds_a_contact_scenario) {
+  // The report gives each engine's contact as it was built: its ground, and where mu and e
+  // go (per object, with the engine's combine rule, or per contact), in the contact setup or
+  // in the origin of an integrator that has contact scenarios only.
+  for (const auto& e : audit::engines_found()) {
+    if (!e.contact || e.name.rfind("exec::", 0) == 0) continue;
+    SCOPED_TRACE(e.name);
+    const std::string& said = e.contact->setup.empty() ? e.origin : e.contact->setup;
+    EXPECT_NE(said.find("ground"), std::string::npos) << said;
+    EXPECT_NE(said.find("mu"), std::string::npos) << said;
+    EXPECT_TRUE(said.find("sqrt(e)") != std::string::npos || said.find("bounce") != std::string::npos ||
+                said.find("solref") != std::string::npos || said.find("c = (1 - e)") != std::string::npos)
+        << said;
+    if (!e.contact->setup.empty()) {
+      audit::contact_audit a;
+      a.integrator = e.name;
+      a.origin = e.origin;
+      a.declared = *e.contact;
+      EXPECT_NE(audit::contact_to_markdown({a}).find("Contact: " + e.contact->setup), std::string::npos);
+    }
+  }
+}
+
 TEST(contact, simbodys_box_creeps_down_the_slope_at_its_friction_models_rate) {
   // Simbody's friction with mu_s = mu_d = mu and no viscous term is mu N step5(v / vt) below
   // the transition velocity vt (CompliantContactSubsystem.cpp, stribeck; step5(x) = 10x^3 -

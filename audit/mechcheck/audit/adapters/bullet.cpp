@@ -605,6 +605,11 @@ std::vector<engine_integrator> integrators() {
                 "m_restitution \"best simulation results using zero restitution\"; btContactSolverInfo.h: "
                 "m_restitutionVelocityThreshold 0.2 \"if the relative velocity is below this threshold, there is zero "
                 "restitution\"; btContactSolverInfo's defaults (m_splitImpulse true, m_erp2 0.2, m_solverMode SOLVER_USE_WARMSTARTING | SOLVER_SIMD)";
+      c.setup = "each body a btRigidBody with its mass, its principal moments and its shape (btBoxShape of the "
+                "half-edges, btSphereShape, btCylinderShape about the body's y), damping 0, never deactivated; the "
+                "ground a static btRigidBody with a btStaticPlaneShape through the origin with the slope's normal; "
+                "sqrt(mu) and sqrt(e) on every object: Bullet combines two objects' friction and restitution by their "
+                "product (btManifoldResult::calculateCombinedFriction, calculateCombinedRestitution)";
       e.contact = c;
     }
     out.push_back(std::move(e));

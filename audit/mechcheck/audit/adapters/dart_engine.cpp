@@ -334,6 +334,11 @@ std::vector<engine_integrator> integrators() {
             "1e-5; in its source, no bounce below an approach of 0.1 m/s); the boxed LCP solver; the world's default collision detector: " + detector +
             " (FCLCollisionDetector.hpp, MESH: \"use approximate mesh shapes for the primitive shapes. The contact result "
             "is probably less accurate than the analytic result\")";
+  c.setup = "each body a Skeleton on a FreeJoint with a ShapeNode of its shape (BoxShape of the full edges, "
+            "SphereShape, CylinderShape turned onto the body's y); the ground an immobile Skeleton whose welded body "
+            "carries a 40 m x 40 m x 1 m BoxShape, its top face the plane; every shape setFrictionCoeff(mu) and "
+            "setRestitutionCoeff(sqrt(e)): DART takes a pair's smaller friction and the product of the restitutions "
+            "(ContactConstraint.cpp), so every pair has mu and e; the world's constraint solver at its defaults";
   e.contact = c;
   engine_integrator a;
   a.name = run::analytic_name;

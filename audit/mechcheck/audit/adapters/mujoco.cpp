@@ -526,6 +526,13 @@ contact_claims contact_claims_of(bool elliptic) {
                         "sometimes make the solver faster and more robust.\"; the contacts are soft constraints (solref, "
                         "solimp); no restitution coefficient (a bounce through solref's damping ratio)") +
             (elliptic ? "; cone=\"elliptic\" set" : "; the default cone");
+  c.setup = std::string("MJCF (mjcf_contact): the ground a plane geom turned by the slope about y; each body a body with a "
+                        "freejoint, its inertial given and one geom (a box of the half-edges, a sphere, a cylinder turned "
+                        "onto the body's y); every geom friction=\"mu 0 0\" and condim 3 (1 where mu = 0): MuJoCo takes a "
+                        "pair's larger friction, so every pair has mu; e > 0 as solref=\"0.02 zeta\" with zeta = "
+                        "-ln e / sqrt(pi^2 + ln^2 e), else solref's default (0.02, 1); solimp, impratio and the solver "
+                        "(Newton, 100 iterations, no noslip pass) at their defaults; cone=\"") +
+            (elliptic ? "elliptic" : "pyramidal") + "\"";
   return c;
 }
 }  // namespace

@@ -374,6 +374,12 @@ std::vector<engine_integrator> integrators() {
                     "coefficient\", dContactApprox1_1 \"Use the friction pyramid approximation for friction direction 1\", "
                     "bounce \"Coefficient of restitution\", dContactBounce \"Restore collision energy anti-parallel to the "
                     "normal\"; the world's ERP 0.2 and CFM 1e-5 (defaults)";
+          c.setup = "each body a dBody with its mass and inertia and one geom in a dSimpleSpace (dCreateBox of the "
+                    "full edges, dCreateSphere, dCreateCylinder turned onto the body's y), the ground a dCreatePlane "
+                    "through the origin with the slope's normal; dCollide's contacts (up to 8 a pair) each a contact "
+                    "joint with surface.mu = mu and mode dContactApprox1 (the pyramid in both friction directions), and "
+                    "where e > 0 dContactBounce with bounce = e and bounce_vel = 0; no soft_erp or soft_cfm of its own "
+                    "(the world's)";
           e.contact = c;
         }
         out.push_back(std::move(e));

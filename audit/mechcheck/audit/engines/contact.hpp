@@ -99,6 +99,10 @@ struct contact_claims {
   /// A soft contact by design (penetration, and slow motion under static loads).
   std::optional<bool> soft;
   std::string words;
+  /// How the adapter builds a contact scenario in the engine's own terms (its ground, its
+  /// shapes, where mu and e go and the combine rule that makes every pair have them, the
+  /// contact settings it leaves at their defaults); empty where the origin says it.
+  std::string setup;
 };
 
 /// One measurement of a contact scenario at one step: its value, the exact one, their

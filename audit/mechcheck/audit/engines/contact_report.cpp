@@ -148,6 +148,7 @@ std::string contact_to_json(const std::vector<contact_audit>& audits) {
     if (a.declared.soft) claims["soft"] = *a.declared.soft;
     if (!a.declared.words.empty()) claims["words"] = a.declared.words;
     j["declared"] = claims;
+    if (!a.declared.setup.empty()) j["contact_setup"] = a.declared.setup;
     json scenarios = json::array();
     for (const auto& s : a.scenarios) {
       json js = {{"scenario", s.scenario}};
@@ -219,6 +220,7 @@ std::string contact_to_markdown(const std::vector<contact_audit>& audits) {
   md << "\n";
   for (const auto& a : audits) {
     md << "## " << a.integrator << "\n\n" << a.origin << "\n\n";
+    if (!a.declared.setup.empty()) md << "Contact: " << a.declared.setup << "\n\n";
     for (const auto& v : a.verdicts) md << "- " << verdict_line(v) << "\n";
     md << "\n";
   }
