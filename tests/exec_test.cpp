@@ -296,6 +296,31 @@ TEST(exec, an_engine_child_is_audited_on_the_scenarios_it_builds_and_refuses_the
   EXPECT_EQ(t.failures(), 0) << t.last_failure();
 }
 
+TEST(exec, a_contact_case_is_written_as_the_lines_the_child_reads) {
+  // A shrunk contact case of an engine behind the protocol is its start, its steps at
+  // h = 1/60 to the scenario's end and its end: piped into the child alone, they replay it.
+  namespace ep = audit::exec_protocol;
+  const auto t = audit::exec_engine(child("engine_decimal"));
+  const auto& e = t.integrators[0];
+  ASSERT_TRUE(e.contact_model);
+  EXPECT_EQ(e.contact_model_extension, "jsonl");
+  for (const auto& s : audit::contact_scenarios()) {
+    std::istringstream lines(e.contact_model(s));
+    std::string start, step, end, more;
+    ASSERT_TRUE(std::getline(lines, start) && std::getline(lines, step) && std::getline(lines, end)) << s.name;
+    EXPECT_FALSE(std::getline(lines, more)) << s.name;
+    const auto j = nlohmann::json::parse(start), k = nlohmann::json::parse(step);
+    EXPECT_EQ(j.at("op"), "start");
+    EXPECT_EQ(j.at("integrator"), "euler");  // the child's name, not the audit's
+    EXPECT_EQ(j.at("scenario"), nlohmann::json::parse(ep::scenario_json(s, true))) << s.name;
+    EXPECT_EQ(k.at("op"), "step");
+    EXPECT_EQ(*ep::number_value(k.at("h").get<std::string>()), 1.0 / 60);
+    EXPECT_EQ(k.at("n").get<long>(), std::lround(s.t_end * 60)) << s.name;
+    EXPECT_EQ(k.at("read"), "last");
+    EXPECT_EQ(nlohmann::json::parse(end), (nlohmann::json{{"op", "end"}, {"run", 1}}));
+  }
+}
+
 TEST(exec, an_engine_child_that_claims_too_much_is_contradicted) {
   const auto t = audit::exec_engine(child("engine_decimal"));  // and its numbers in decimal
   const auto a = audit::audit_engine(integrator(t, "::euler_says_4"), pendulums());

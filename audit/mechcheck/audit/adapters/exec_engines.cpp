@@ -378,6 +378,19 @@ exec_engine_target exec_engine(const std::vector<std::string>& command, const ex
     e.contact = i.contact;
     e.contact_only = i.contact_only;
     const std::string name = i.name;
+    // A contact case as the lines the child reads: its start, the steps at h = 1/60 to the
+    // scenario's end (the last reading answered) and its end. Piped into the child's command
+    // alone (`COMMAND < FILE`), they replay the case in the engine without mechcheck.
+    e.contact_model = [name, decimal = s->decimal](const scenario& sc) {
+      const double h = 1.0 / 60;
+      const json start = {{"op", "start"}, {"run", 1}, {"integrator", name},
+                          {"scenario", json::parse(exec_protocol::scenario_json(sc, decimal))}};
+      const json step = {{"op", "step"}, {"run", 1}, {"h", number_text(h, decimal)},
+                         {"n", std::lround(sc.t_end / h)}, {"read", "last"}};
+      const json end = {{"op", "end"}, {"run", 1}};
+      return start.dump() + "\n" + step.dump() + "\n" + end.dump() + "\n";
+    };
+    e.contact_model_extension = "jsonl";
     e.start = [s, name](const scenario& sc) -> std::unique_ptr<engine_run> {
       return std::make_unique<exec_engine_run>(s, name, sc);
     };
