@@ -119,6 +119,45 @@ TEST(robots, the_lagrangian_gives_the_two_link_arms_closed_form_in_double_and_mp
             1e-13);
 }
 
+TEST(robots, the_kinematics_give_the_two_link_arms_closed_form) {
+  // The arm turns about y and hangs along -z: R_y(a) takes (0, 0, -d) to (-d sin a, 0, -d cos a).
+  // A point p = (0, 0, -d) of the forearm is at x = -(l1 s1 + d s12, 0, l1 c1 + d c12), with
+  // s12 = sin(q1 + q2); J's columns are dx/dq1, dx/dq2 over omega = (0, 1, 0) each; Jdot qdot
+  // at qddot = 0 is (l1 s1 w1^2 + d s12 w12^2, 0, l1 c1 w1^2 + d c12 w12^2), no angular part;
+  // the centre of mass and the centroidal momentum from the links' centres and velocities.
+  const double m1 = 2, m2 = 1.5, l1 = 1, c1 = 0.5, c2 = 0.375, i1 = 0.25, i2 = 0.0625, d = 0.8;
+  const rb::robot_model<double> m(two_link_arm(m1, m2, l1, c1, c2, i1, i2));
+  const Eigen::VectorXd q = Eigen::Vector2d(0.3, -0.7), qdot = Eigen::Vector2d(1.1, 0.4);
+  const double s1 = std::sin(q(0)), co1 = std::cos(q(0)), s12 = std::sin(q(0) + q(1)), co12 = std::cos(q(0) + q(1));
+  const double w1 = qdot(0), w12 = qdot(0) + qdot(1);
+  Eigen::MatrixXd j(6, 2);
+  j << -l1 * co1 - d * co12, -d * co12, 0, 0, l1 * s1 + d * s12, d * s12, 0, 0, 1, 1, 0, 0;
+  constexpr double eps = 0x1p-52;
+  const int fore = 2;
+  EXPECT_LE((rb::point_jacobian(m, q, fore, Eigen::Vector3d(0, 0, -d)) - j).cwiseAbs().maxCoeff(), 32 * eps * (l1 + d));
+  Eigen::VectorXd a(6);
+  a << l1 * s1 * w1 * w1 + d * s12 * w12 * w12, 0, l1 * co1 * w1 * w1 + d * co12 * w12 * w12, 0, 0, 0;
+  EXPECT_LE((rb::point_bias_acceleration(m, q, qdot, fore, Eigen::Vector3d(0, 0, -d)) - a).cwiseAbs().maxCoeff(),
+            32 * eps * (l1 + d) * w12 * w12);
+  // The centres: upper at -c1 (s1, 0, c1), fore at -(l1 s1 + c2 s12, 0, l1 c1 + c2 c12).
+  const Eigen::Vector3d x1 = -c1 * Eigen::Vector3d(s1, 0, co1);
+  const Eigen::Vector3d x2 = -Eigen::Vector3d(l1 * s1 + c2 * s12, 0, l1 * co1 + c2 * co12);
+  const Eigen::Vector3d v1 = -c1 * w1 * Eigen::Vector3d(co1, 0, -s1);
+  const Eigen::Vector3d v2 = -Eigen::Vector3d(l1 * co1 * w1 + c2 * co12 * w12, 0, -l1 * s1 * w1 - c2 * s12 * w12);
+  const Eigen::Vector3d c = (m1 * x1 + m2 * x2) / (m1 + m2);
+  EXPECT_LE((rb::centre_of_mass(m, q) - c).cwiseAbs().maxCoeff(), 32 * eps * (l1 + c2));
+  Eigen::VectorXd h(6);
+  h << m1 * v1 + m2 * v2, Eigen::Vector3d(0, i1 * w1 + i2 * w12, 0) + m1 * (x1 - c).cross(v1) + m2 * (x2 - c).cross(v2);
+  const double scale = (m1 + m2) * (l1 + c2) * (l1 + c2) * w12 + (i1 + i2) * w12;
+  EXPECT_LE((rb::centroidal_momentum_matrix(m, q) * qdot - h).cwiseAbs().maxCoeff(), 32 * eps * scale);
+  EXPECT_LE((rb::com_jacobian(m, q) * qdot - (m1 * v1 + m2 * v2) / (m1 + m2)).cwiseAbs().maxCoeff(),
+            32 * eps * (l1 + c2) * w12);
+  // Bad input: a link that is not the robot's, coordinates of the wrong size.
+  EXPECT_THROW(rb::point_jacobian(m, q, 3), domain_error);
+  EXPECT_THROW(rb::point_jacobian(m, Eigen::VectorXd(Eigen::Vector3d::Zero()), 1), dimension_error);
+  EXPECT_THROW(rb::point_bias_acceleration(m, q, Eigen::VectorXd(Eigen::Vector3d::Zero()), 1), dimension_error);
+}
+
 TEST(robots, a_slider_carries_its_own_and_its_childrens_mass) {
   // A prismatic joint along a skew axis under a revolute one: M(slide) = m2 + m3 whatever
   // the angle, and gravity's force along the slide is -(m2 + m3) g . a_world.
