@@ -321,6 +321,25 @@ CHECKS = [
      lambda: [repro("cannon_contact", f"box_start_displacement_n{n}") for n in (60, 120, 240, 480, 960)],
      lambda: contact_series("exec::cannon_es::World.step", "contact_slide", "stopping distance",
                             "contact-cannon/contact.json"), 1e-6, True),
+    # Simbody's compliant contact: the same system, start and error control (1e-6 relative; the
+    # spread, 5.9e-8, to 1e-9).
+    *slide_pairs("simbody-contact", "Simbody 3.7", "simbody_contact", "", "simbody::RungeKuttaMerson/contact",
+                 "contact-simbody/contact.json", 1e-9, False),
+    measure_pair("simbody-contact", "Simbody 3.7: the creep rate down a slope below the friction angle",
+                 "simbody_contact", "slope_creep_rate", "simbody::RungeKuttaMerson/contact", "contact_slope_stick",
+                 "creep rate (second half)", "contact-simbody/contact.json"),
+    measure_pair("simbody-contact", "Simbody 3.7: the creep down the slope in 3 s", "simbody_contact", "slope_creep",
+                 "simbody::RungeKuttaMerson/contact", "contact_slope_stick", "creep down the slope",
+                 "contact-simbody/contact.json"),
+    ("simbody-contact", "Simbody 3.7: the creep rate against its friction model's, vt step5^-1(tan a / mu)",
+     lambda: repro("simbody_contact", "slope_creep_rate"), lambda: repro("simbody_contact", "slope_model_rate"), 1e-3, True),
+    # Bullet's Featherstone world: the same world, start and arithmetic.
+    *slide_pairs("bullet-multibody-contact", "Bullet 3.24 (btMultiBody)", "bullet_multibody_contact", "",
+                 "bullet::multibody", "contact-bullet-multibody/contact.json"),
+    ("bullet-multibody-contact", "Bullet 3.24 (btMultiBody): the stopping distance at h = 1/60 to 1/960 (m)",
+     lambda: [repro("bullet_multibody_contact", f"slide_distance_n{n}") for n in (60, 120, 240, 480, 960)],
+     lambda: contact_series("bullet::multibody", "contact_slide", "stopping distance",
+                            "contact-bullet-multibody/contact.json"), 1e-6, True),
     # DART's contact: the same worlds, starts and arithmetic, at h = 1/60 and 1/960: 1e-6 relative.
 ] + [
     ("dart-contact", f"DART 6.12.1 ({which}): {what} at h = 1/60 and 1/960",
