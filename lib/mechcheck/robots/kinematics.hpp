@@ -26,7 +26,7 @@
 namespace mechcheck::robots {
 
 namespace detail {
-/// The index of a link of the model, checked (index_error naming the robot).
+/// The index of a link of the model, checked (domain_error naming the robot).
 template <class T>
 std::size_t checked_link(const robot_model<T>& m, int link, const char* who) {
   if (link < 0 || std::size_t(link) >= m.description.links.size())
