@@ -152,10 +152,16 @@ TEST(robots, the_kinematics_give_the_two_link_arms_closed_form) {
   EXPECT_LE((rb::centroidal_momentum_matrix(m, q) * qdot - h).cwiseAbs().maxCoeff(), 32 * eps * scale);
   EXPECT_LE((rb::com_jacobian(m, q) * qdot - (m1 * v1 + m2 * v2) / (m1 + m2)).cwiseAbs().maxCoeff(),
             32 * eps * (l1 + c2) * w12);
-  // Bad input: a link that is not the robot's, coordinates of the wrong size.
+  // Bad input: a link that is not the robot's, coordinates of the wrong size, a NaN or an
+  // infinity among them or in the point.
   EXPECT_THROW(rb::point_jacobian(m, q, 3), domain_error);
   EXPECT_THROW(rb::point_jacobian(m, Eigen::VectorXd(Eigen::Vector3d::Zero()), 1), dimension_error);
   EXPECT_THROW(rb::point_bias_acceleration(m, q, Eigen::VectorXd(Eigen::Vector3d::Zero()), 1), dimension_error);
+  const Eigen::VectorXd nan = Eigen::Vector2d(0.3, std::nan(""));
+  EXPECT_THROW(rb::point_jacobian(m, nan, 1), non_finite_error);
+  EXPECT_THROW(rb::point_bias_acceleration(m, q, nan, 1), non_finite_error);
+  EXPECT_THROW(rb::centroidal_momentum(m, nan, qdot), non_finite_error);
+  EXPECT_THROW(rb::point_jacobian(m, q, 1, Eigen::Vector3d(0, INFINITY, 0)), non_finite_error);
 }
 
 TEST(robots, a_slider_carries_its_own_and_its_childrens_mass) {

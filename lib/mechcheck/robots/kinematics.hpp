@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "mechcheck/core/format.hpp"
 #include "mechcheck/robots/dynamics.hpp"
 
 namespace mechcheck::robots {
@@ -35,11 +36,17 @@ std::size_t checked_link(const robot_model<T>& m, int link, const char* who) {
   return std::size_t(link);
 }
 
+/// q and qdot of the robot's size (dimension_error) and finite (non_finite_error naming the
+/// component).
 template <class T>
-void check_coordinates(const robot_model<T>& m, Eigen::Index q, Eigen::Index qdot, const char* who) {
-  if (q != m.dofs() || qdot != m.dofs())
+void check_state(const robot_model<T>& m, const dynamic_vector<T>& q, const dynamic_vector<T>& qdot, const char* who) {
+  if (q.size() != m.dofs() || qdot.size() != m.dofs())
     throw dimension_error(std::string(who) + ": robot " + m.description.name + " has " + std::to_string(m.dofs()) +
-                          " coordinates, given q of " + std::to_string(q) + " and qdot of " + std::to_string(qdot));
+                          " coordinates, given q of " + std::to_string(q.size()) + " and qdot of " +
+                          std::to_string(qdot.size()));
+  const std::string where = std::string(who) + ": robot " + m.description.name;
+  require_finite_vector(q, where, "q");
+  require_finite_vector(qdot, where, "qdot");
 }
 
 /// The twist (v_p; omega) of point p (in the link's frame) of a link whose state is s.
@@ -82,8 +89,9 @@ momenta<T> momenta_of(const robot_model<T>& m, const std::vector<link_state<T>>&
 /// in the result are zero).
 template <class T>
 std::vector<link_state<T>> link_poses(const robot_model<T>& m, const dynamic_vector<T>& q) {
-  detail::check_coordinates(m, q.size(), m.dofs(), "link_poses");
-  return link_states(m, q, dynamic_vector<T>(dynamic_vector<T>::Zero(q.size())));
+  const dynamic_vector<T> rest = dynamic_vector<T>::Zero(q.size());
+  detail::check_state(m, q, rest, "link_poses");
+  return link_states(m, q, rest);
 }
 
 /// The geometric Jacobian of point p (in the link's frame) fixed on link `link`, in the
@@ -92,7 +100,8 @@ template <class T>
 dynamic_matrix<T> point_jacobian(const robot_model<T>& m, const dynamic_vector<T>& q, int link,
                                  const vector3<T>& p = vector3<T>::Zero()) {
   const std::size_t l = detail::checked_link(m, link, "point_jacobian");
-  detail::check_coordinates(m, q.size(), m.dofs(), "point_jacobian");
+  detail::check_state(m, q, dynamic_vector<T>(dynamic_vector<T>::Zero(q.size())), "point_jacobian");
+  require_finite_vector(p, "point_jacobian: robot " + m.description.name, "p");
   const Eigen::Index n = q.size();
   dynamic_matrix<T> j(6, n);
   for (Eigen::Index k = 0; k < n; ++k) {
@@ -112,7 +121,8 @@ dynamic_vector<T> point_bias_acceleration(const robot_model<T>& m, const dynamic
                                           const dynamic_vector<T>& qdot, int link,
                                           const vector3<T>& p = vector3<T>::Zero()) {
   const std::size_t l = detail::checked_link(m, link, "point_bias_acceleration");
-  detail::check_coordinates(m, q.size(), qdot.size(), "point_bias_acceleration");
+  detail::check_state(m, q, qdot, "point_bias_acceleration");
+  require_finite_vector(p, "point_bias_acceleration: robot " + m.description.name, "p");
   using A = ad<T>;
   const ad_width_scope<A> width(1);
   const Eigen::Index n = q.size();
@@ -140,7 +150,7 @@ vector3<T> centre_of_mass(const robot_model<T>& m, const dynamic_vector<T>& q) {
 /// of mass, L_G = L_O - c x P (eq 83 with a = -c).
 template <class T>
 dynamic_vector<T> centroidal_momentum(const robot_model<T>& m, const dynamic_vector<T>& q, const dynamic_vector<T>& qdot) {
-  detail::check_coordinates(m, q.size(), qdot.size(), "centroidal_momentum");
+  detail::check_state(m, q, qdot, "centroidal_momentum");
   const detail::momenta<T> s = detail::momenta_of(m, link_states(m, q, qdot));
   if (!(s.mass > 0)) throw singular_error("centroidal_momentum: robot " + m.description.name + " carries no mass");
   const vector3<T> c = s.first_moment / s.mass;
@@ -152,7 +162,7 @@ dynamic_vector<T> centroidal_momentum(const robot_model<T>& m, const dynamic_vec
 /// A_G(q), 6 x n: column k is h_G at qdot = e_k.
 template <class T>
 dynamic_matrix<T> centroidal_momentum_matrix(const robot_model<T>& m, const dynamic_vector<T>& q) {
-  detail::check_coordinates(m, q.size(), m.dofs(), "centroidal_momentum_matrix");
+  detail::check_state(m, q, dynamic_vector<T>(dynamic_vector<T>::Zero(q.size())), "centroidal_momentum_matrix");
   const Eigen::Index n = q.size();
   dynamic_matrix<T> a(6, n);
   for (Eigen::Index k = 0; k < n; ++k) {
