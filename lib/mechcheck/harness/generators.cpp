@@ -361,7 +361,8 @@ void showValue(const robot_case& c, std::ostream& os) {
   os << r.links.size() - 1 << " links:";
   for (const robots::joint& j : r.joints)
     os << " " << j.name << " " << robots::joint_type_name(j.type) << " " << j.parent << "->" << j.child << " axis ("
-       << j.axis.transpose() << ")";
+       << j.axis.transpose() << ")" << (j.armature != 0 ? " armature " + to_text(j.armature) : std::string())
+       << (j.damping != 0 ? " damping " + to_text(j.damping) : std::string());
   const auto vec = [&](const char* name, const std::vector<double>& v) {
     os << ", " << name << " = (";
     for (std::size_t i = 0; i < v.size(); ++i) os << (i ? ", " : "") << v[i];

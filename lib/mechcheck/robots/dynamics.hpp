@@ -4,13 +4,16 @@
 /// potential energy in uniform gravity, by forward kinematics in the tier's scalar; then, by
 /// automatic differentiation of L (lagrangian/lagrangian.hpp),
 ///   M(q)            = d2T/dqdot2                                  (the mass matrix)
-///   h(q, qdot)      = (d2L/dqdot dq) qdot - dL/dq                 (bias: Coriolis,
-///                                                                  centrifugal, gravity)
+///   h(q, qdot)      = (d2L/dqdot dq) qdot - dL/dq + B qdot        (bias: Coriolis,
+///                                                                  centrifugal, gravity,
+///                                                                  joint damping)
 ///   g(q)            = dV/dq = h(q, 0)
 ///   tau             = M qddot + h                                 (inverse dynamics)
 ///   qddot           = M^-1 (tau - h)                              (forward dynamics)
 /// -- the Euler-Lagrange equations d/dt dL/dqdot - dL/dq = tau with the joints' generalized
-/// forces tau. Nothing here is a recursive dynamics algorithm: it is the reference that such
+/// forces tau and the joints' viscous damping -B qdot (B = diag(damping), the generalized force
+/// of Rayleigh's dissipation function qdot^T B qdot / 2). A joint's armature adds
+/// armature qdot^2 / 2 to T (robot.hpp). Nothing here is a recursive dynamics algorithm: it is the reference that such
 /// algorithms (composite rigid bodies, Newton-Euler, articulated bodies) are held to.
 
 #include <string>
@@ -51,6 +54,7 @@ struct robot_model {
   std::vector<vector3<T>> com;
   std::vector<matrix3<T>> inertia;
   vector3<T> gravity;
+  std::vector<T> armature, damping;  ///< per coordinate (robot.hpp)
 
   /// Validates the description (robot_error, non_finite_error: see validate()).
   explicit robot_model(robot r) : description(std::move(r)), tree(validate(description)) {
@@ -62,6 +66,10 @@ struct robot_model {
       const vector3<T> a = j.axis.cast<T>();
       const T a2 = a(0) * a(0) + a(1) * a(1) + a(2) * a(2);
       axis.push_back(a / T(sqrt(a2)));
+      if (j.type != joint_type::fixed) {
+        armature.push_back(T(j.armature));
+        damping.push_back(T(j.damping));
+      }
     }
     for (const link& l : description.links) {
       if (!l.body) {
@@ -224,6 +232,12 @@ struct robot_lagrangian {
       const S gx = detail::dot(g, x);
       potential -= mass * gx;
     }
+    for (std::size_t k = 0; k < m.armature.size(); ++k)
+      if (m.armature[k] > 0) {
+        const S rate2 = qdot(Eigen::Index(k)) * qdot(Eigen::Index(k));
+        const S rotor = lift<S>(m.armature[k]) * rate2;
+        kinetic += rotor * half<S>();
+      }
     return {kinetic, potential};
   }
 
@@ -294,6 +308,7 @@ motion_terms<T> motion_terms_at(const robot_model<T>& m, const dynamic_vector<T>
   motion_terms<T> out;
   out.mass_matrix = j.kinetic;
   out.bias = j.mixed * qdot - j.dq;
+  for (Eigen::Index k = 0; k < qdot.size(); ++k) out.bias(k) += m.damping[std::size_t(k)] * qdot(k);
   std::tie(out.kinetic, out.potential) = lag.energies(q, qdot);
   return out;
 }

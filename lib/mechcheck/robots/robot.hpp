@@ -70,6 +70,17 @@ struct joint {
   std::string parent, child;  ///< link names
   pose origin;                ///< the child's frame in the parent's at q = 0
   Eigen::Vector3d axis{1, 0, 0};  ///< unit vector in the joint (child) frame; unused when fixed
+  /// A moving joint's own terms, zero unless the description gives them (unused when fixed):
+  ///  - armature: the inertia of the rotor that drives the coordinate, reflected through its
+  ///    gearing (kg m^2 about a hinge, kg along a slide): it adds armature qdot^2 / 2 to the
+  ///    kinetic energy, so armature to M's diagonal, as MuJoCo's armature and KDL's joint
+  ///    inertia do; the rotor's own gyroscopic coupling is left out, as theirs is;
+  ///  - damping: viscous friction (N m s/rad, N s/m): the generalized force -damping qdot,
+  ///    Rayleigh's dissipation function damping qdot^2 / 2 (URDF's <dynamics damping>);
+  ///  - friction: Coulomb friction (N m, N; URDF's <dynamics friction>): kept as the file
+  ///    gives it and not part of the equations of motion here (each library makes it a
+  ///    constraint of its own, or none).
+  double armature = 0, damping = 0, friction = 0;
 };
 
 struct robot {
@@ -114,7 +125,8 @@ inline void require_finite_pose(const pose& p, const std::string& where) {
 /// triangle inequality I1 + I2 >= I3 (notes eqs 154-156; tolerance 64 eps |I|); an axis
 /// that is zero or not of unit length (to 1e-9, URDF writes axes to a few digits); a
 /// moving joint whose child and everything below it are massless (no inertial: its
-/// coordinate has no inertia); and non_finite_error for a number that is not finite.
+/// coordinate has no inertia); a negative armature, damping or friction; and
+/// non_finite_error for a number that is not finite.
 inline tree validate(const robot& r) {
   const std::string who = "robot " + r.name;
   if (r.links.empty()) throw robot_error(who + ": no links");
@@ -158,6 +170,11 @@ inline tree validate(const robot& r) {
         throw robot_error(where + ": axis " + detail::vector_text(jt.axis) + " is not a unit vector (length " +
                           to_text(jt.axis.norm()) + ")");
       t.coordinate[j] = t.dofs++;
+    }
+    for (const auto& [what, value] : {std::pair{"armature", jt.armature}, std::pair{"damping", jt.damping},
+                                      std::pair{"friction", jt.friction}}) {
+      if (!std::isfinite(value)) throw non_finite_error(where + ": " + what + " " + to_text(value) + " is not finite");
+      if (value < 0) throw robot_error(where + ": " + what + " " + to_text(value) + " is negative");
     }
   }
   int roots = 0;
@@ -205,14 +222,15 @@ inline tree validate(const robot& r) {
   }
   // A link without <inertial> is massless, as urdfdom reads it: a frame, fine on a fixed
   // joint or with mass below it; a moving joint that carries no mass at all makes the mass
-  // matrix singular (its row and column are zero), refused here, before any library runs.
+  // matrix singular (its row and column are zero, unless its rotor's armature fills the
+  // diagonal), refused here, before any library runs.
   std::vector<double> subtree_mass(nl, 0);
   for (std::size_t i = 0; i < nl; ++i)
     if (r.links[i].body) subtree_mass[i] = r.links[i].body->mass;
   for (auto j = t.order.rbegin(); j != t.order.rend(); ++j)
     subtree_mass[std::size_t(t.parent_link[std::size_t(*j)])] += subtree_mass[std::size_t(t.child_link[std::size_t(*j)])];
   for (std::size_t j = 0; j < nj; ++j)
-    if (t.coordinate[j] >= 0 && !(subtree_mass[std::size_t(t.child_link[j])] > 0))
+    if (t.coordinate[j] >= 0 && !(subtree_mass[std::size_t(t.child_link[j])] > 0) && !(r.joints[j].armature > 0))
       throw robot_error(who + ": joint " + r.joints[j].name + " moves link " + r.joints[j].child +
                         ", which carries no mass, nor does any link below it (no <inertial>): the mass matrix is "
                         "singular in its coordinate");

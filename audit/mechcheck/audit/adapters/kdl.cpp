@@ -50,9 +50,9 @@ class kdl_model final : public dynamics_model {
       const KDL::Frame origin = frame(jt.origin);
       KDL::Joint joint(jt.name, KDL::Joint::None);
       if (jt.type == robots::joint_type::revolute || jt.type == robots::joint_type::continuous)
-        joint = KDL::Joint(jt.name, origin.p, origin.M * vec(jt.axis), KDL::Joint::RotAxis);
+        joint = KDL::Joint(jt.name, origin.p, origin.M * vec(jt.axis), KDL::Joint::RotAxis, 1, 0, jt.armature);
       else if (jt.type == robots::joint_type::prismatic)
-        joint = KDL::Joint(jt.name, origin.p, origin.M * vec(jt.axis), KDL::Joint::TransAxis);
+        joint = KDL::Joint(jt.name, origin.p, origin.M * vec(jt.axis), KDL::Joint::TransAxis, 1, 0, jt.armature);
       const robots::link& child = r.links[std::size_t(t.child_link[std::size_t(j)])];
       if (!tree_.addSegment(KDL::Segment(child.name, joint, origin, inertia(child.body)), jt.parent))
         throw robot_refused("kdl: Tree::addSegment refused link " + child.name);
@@ -147,7 +147,11 @@ dynamics_library kdl_dynamics() {
   l.name = "kdl";
   l.origin = "Orocos KDL 1.5.1 (liborocos-kdl-dev): ChainDynParam::JntToMass, JntToCoriolis + JntToGravity, "
              "ChainIdSolver_RNE, ChainFdSolver_RNE on a chain; TreeIdSolver_RNE on a tree; the tree built as "
-             "ROS's kdl_parser builds it from URDF";
+             "ROS's kdl_parser builds it from URDF; a joint's armature as the Joint's inertia (JntToMass adds it "
+             "to H's diagonal, the RNE solvers inertia q_dotdot); no damping: KDL 1.5.1 keeps a Joint's damping "
+             "and none of its solvers reads it (getDamping is called nowhere in its source), so a robot with "
+             "damping is refused";
+  l.sets_armature = true;
   l.load = [](const robots::robot& r) -> std::unique_ptr<dynamics_model> { return std::make_unique<kdl_model>(r); };
   return l;
 }

@@ -51,7 +51,7 @@ void body_xml(const robots::robot& r, const robots::tree& t, int link, int joint
     if (j.type != robots::joint_type::fixed)
       out += std::string("<joint name=\"") + j.name + "\" type=\"" +
              (j.type == robots::joint_type::prismatic ? "slide" : "hinge") + "\" pos=\"0 0 0\" axis=\"" +
-             nums(j.axis.data(), 3) + "\"/>";
+             nums(j.axis.data(), 3) + "\" armature=\"" + num(j.armature) + "\" damping=\"" + num(j.damping) + "\"/>";
   }
   for (std::size_t k = 0; k < r.joints.size(); ++k)
     if (t.parent_link[k] == link) body_xml(r, t, t.child_link[k], static_cast<int>(k), out);
@@ -125,6 +125,8 @@ robots::robot robot_of(const mjModel* m, const std::vector<int>& dof_of_coordina
     j.name = mj_id2name(m, mjOBJ_JOINT, id);
     j.type = m->jnt_type[id] == mjJNT_SLIDE ? robots::joint_type::prismatic : robots::joint_type::continuous;
     for (int i = 0; i < 3; ++i) j.axis(i) = m->jnt_axis[3 * id + i];
+    j.armature = m->dof_armature[m->jnt_dofadr[id]];
+    j.damping = m->dof_damping[m->jnt_dofadr[id]];
     const auto at = std::find(dof_of_coordinate.begin(), dof_of_coordinate.end(), m->jnt_dofadr[id]);
     if (at == dof_of_coordinate.end()) throw error("mujoco: joint " + j.name + " is none of the robot's coordinates");
     moving[std::size_t(at - dof_of_coordinate.begin())] = j;
@@ -178,7 +180,11 @@ class mujoco_model final : public dynamics_model {
   std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) override {
     set(q, qdot);
     mj_forward(m_.get(), d_.get());
-    return read(d_->qfrc_bias);
+    // h = qfrc_bias - qfrc_passive: the joints' damping is a passive force (-damping qvel),
+    // which mj_inverse and mj_forward count and qfrc_bias does not.
+    Eigen::VectorXd h = read(d_->qfrc_bias);
+    h -= read(d_->qfrc_passive);
+    return h;
   }
   std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                                          const Eigen::VectorXd& qddot) override {
@@ -230,7 +236,9 @@ namespace {
 /// MuJoCo's conventions the adapter sets or accounts for, named in each library's origin.
 const char* const conventions =
     "; qfrc_bias is Coriolis, centrifugal and gravity (M qacc + qfrc_bias = qfrc_applied, the sign of h); "
-    "inertia about the centre of mass (body_ipos); no armature, damping or friction loss set";
+    "inertia about the centre of mass (body_ipos); a joint's armature (added to M's diagonal) and damping "
+    "(qfrc_passive = -damping qvel, counted in h as qfrc_bias - qfrc_passive) as the robot gives them; no "
+    "friction loss (a constraint of MuJoCo's, not held here) and no spring";
 
 dynamics_library library(std::string name, std::string origin, std::function<std::string(const robots::robot&)> model) {
   dynamics_library l;
@@ -239,23 +247,32 @@ dynamics_library library(std::string name, std::string origin, std::function<std
   l.load = [model](const robots::robot& r) -> std::unique_ptr<dynamics_model> {
     return std::make_unique<mujoco_model>(r, model(r));
   };
+  l.sets_damping = true;
   return l;
 }
 }  // namespace
 
 dynamics_library dynamics() {
-  return library("mujoco",
+  dynamics_library l = library("mujoco",
                  "mj_fullM of qM, qfrc_bias and qacc after mj_forward, qfrc_inverse after mj_inverse, on a model "
                  "built as MJCF (each link a body at its joint's origin, its inertia turned into the body frame as "
                  "fullinertia, hinge and slide joints, no limits or geoms)",
                  robot_mjcf);
+  l.sets_armature = true;
+  return l;
 }
 
 dynamics_library urdf_dynamics() {
   return library("mujoco-urdf",
                  "the same functions on the model MuJoCo's own URDF import builds (mj_loadXML of the robot's URDF, "
-                 "whose joint limits of +-1e9 are never reached; gravity set on mjModel::opt)",
-                 [](const robots::robot& r) { return to_urdf(r); });
+                 "whose joint limits of +-1e9 are never reached; gravity set on mjModel::opt; its <dynamics "
+                 "damping> read as the joint's damping, and friction left out of the file: the import makes it a "
+                 "friction loss; URDF has no armature, and a robot with one is refused)",
+                 [](const robots::robot& r) {
+                   robots::robot without_friction = r;
+                   for (robots::joint& j : without_friction.joints) j.friction = 0;
+                   return to_urdf(without_friction);
+                 });
 }
 
 }  // namespace mechcheck::audit::mujoco

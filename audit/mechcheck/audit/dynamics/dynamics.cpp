@@ -6,6 +6,7 @@
 #include <cstring>
 #include <map>
 #include <mutex>
+#include <tuple>
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -113,8 +114,23 @@ dynamics_residual residual_of(dynamics_quantity quantity, const Eigen::MatrixXd&
 }
 }  // namespace
 
+std::string unset_joint_terms(const robots::robot& robot, const std::string& library, bool sets_armature,
+                              bool sets_damping) {
+  for (const robots::joint& j : robot.joints) {
+    if (j.type == robots::joint_type::fixed) continue;
+    for (const auto& [what, value, set] : {std::tuple{"armature (rotor inertia)", j.armature, sets_armature},
+                                           std::tuple{"damping", j.damping, sets_damping}})
+      if (value > 0 && !set)
+        return "joint " + j.name + " has " + what + " " + to_text(value) + ", which the adapter of " + library +
+               " does not set in it";
+  }
+  return {};
+}
+
 dynamics_check check_dynamics(const dynamics_library& library, const robots::robot& robot, const dynamics_state& x) {
   dynamics_check out;
+  out.refused = unset_joint_terms(robot, library.name, library.sets_armature, library.sets_damping);
+  if (!out.refused.empty()) return out;
   std::unique_ptr<dynamics_model> model;
   try {
     model = library.load(robot);

@@ -79,6 +79,10 @@ struct dynamics_library {
   /// The command's arguments that audit it again, for a disagreement's message ("--dynamics
   /// NAME" when empty; a child's: "--exec-dynamics -- COMMAND").
   std::string selector;
+  /// The joints' own terms its adapter sets in the library (robots::joint): a robot with a
+  /// nonzero armature or damping where the adapter sets none is refused by name, never held
+  /// to a reference the library was not given.
+  bool sets_armature = false, sets_damping = false;
 };
 
 /// A library's order of the robot's coordinates, for its adapter: order[i] is the robot's
@@ -134,6 +138,12 @@ struct dynamics_check {
   std::optional<double> model_difference;
   double model_scale = 0;  ///< the scale of M_given, for model_difference
 };
+
+/// Why a library whose adapter sets the joints' armature or damping only as the flags say
+/// refuses the robot ("joint J has damping 0.5, which the adapter of L does not set in
+/// it"); empty when it takes it.
+std::string unset_joint_terms(const robots::robot& robot, const std::string& library, bool sets_armature,
+                              bool sets_damping);
 
 /// The library against the exact Lagrangian on one robot and state. A library's failure
 /// (its error code, a non-finite value) is an error naming it.

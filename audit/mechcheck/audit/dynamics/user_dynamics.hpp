@@ -129,6 +129,9 @@ concept offers_forward = requires(M& m, const dynamic_vector<T>& x) {
 template <template <class> class Model>
 struct templated_dynamics {
   std::string name, origin;
+  /// Whether Model sets a joint's armature and damping (robots::joint); a robot with one it
+  /// does not set is refused (unset_joint_terms).
+  bool sets_armature = false, sets_damping = false;
 
   template <class T>
   dynamics_check check(const robots::robot& robot, const dynamics_state& x) const {
@@ -136,6 +139,8 @@ struct templated_dynamics {
                       detail::offers_inverse<Model<T>, T> || detail::offers_forward<Model<T>, T>,
                   "templated_dynamics: Model<T> offers none of mass_matrix, bias, inverse, forward");
     dynamics_check out;
+    out.refused = unset_joint_terms(robot, name, sets_armature, sets_damping);
+    if (!out.refused.empty()) return out;
     std::optional<Model<T>> model;
     try {
       model.emplace(robot);

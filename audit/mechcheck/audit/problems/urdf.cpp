@@ -199,6 +199,19 @@ robots::robot parse_urdf(const std::string& document, const std::string& origin)
     } else if (j.type != robots::joint_type::fixed) {
       r.readings.push_back(what + ": no axis given: URDF's default (1, 0, 0)");
     }
+    // URDF's <dynamics damping friction>, and armature= beside them: mechcheck's attribute for
+    // a rotor's reflected inertia, which URDF has no word for (urdfdom reads damping and
+    // friction and passes over any other attribute of <dynamics>).
+    if (const tinyxml2::XMLElement* d = e->FirstChildElement("dynamics")) {
+      known(d, {}, {"damping", "friction", "armature"}, what + " dynamics");
+      for (const auto& [name, target] : {std::pair{"damping", &j.damping}, std::pair{"friction", &j.friction},
+                                         std::pair{"armature", &j.armature}})
+        if (d->Attribute(name)) *target = attribute(d, name, what + " dynamics");
+      if (j.friction > 0 && j.type != robots::joint_type::fixed)
+        r.readings.push_back(what + ": friction " + to_text(j.friction) +
+                             " (<dynamics friction>) is not part of the equations of motion held here: each library "
+                             "makes Coulomb friction a constraint of its own, or nothing");
+    }
     r.joints.push_back(std::move(j));
   }
   // Refuse here what the dynamics would: the messages name the file.
@@ -254,6 +267,12 @@ std::string to_urdf(const robots::robot& r) {
     e->InsertNewChildElement("child")->SetAttribute("link", j.child.c_str());
     origin(e, j.origin);
     if (j.type != robots::joint_type::fixed) e->InsertNewChildElement("axis")->SetAttribute("xyz", text(j.axis).c_str());
+    if (j.damping != 0 || j.friction != 0 || j.armature != 0) {
+      tinyxml2::XMLElement* d = e->InsertNewChildElement("dynamics");
+      d->SetAttribute("damping", text(j.damping).c_str());
+      d->SetAttribute("friction", text(j.friction).c_str());
+      if (j.armature != 0) d->SetAttribute("armature", text(j.armature).c_str());
+    }
     if (j.type == robots::joint_type::revolute || j.type == robots::joint_type::prismatic) {
       // URDF requires limits on these types; the dynamics do not use them.
       tinyxml2::XMLElement* limit = e->InsertNewChildElement("limit");
