@@ -1,0 +1,468 @@
+// The dynamics audit: a library against the exact Lagrangian -- every library this build
+// found against the two-link arm's closed form and on random robots, wrong libraries caught
+// (the budget, the scales, a library that holds another robot, a joint's armature and
+// damping), a campaign's records.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <sstream>
+
+#include <rapidcheck.h>
+
+#include "mechcheck/audit/adapters/found.hpp"
+#include "mechcheck/audit/dynamics/dynamics.hpp"
+#include "mechcheck/audit/problems/urdf.hpp"
+#include "mechcheck/harness/generators.hpp"
+#include "mechcheck/robots.hpp"
+#include "two_link_arm.hpp"
+
+namespace dynamics_audit_test {
+using namespace mechcheck;
+namespace rb = mechcheck::robots;
+namespace audit = mechcheck::audit;
+using robots_test::arm_closed_form;
+using robots_test::arm_terms;
+using robots_test::seeded_check;
+using robots_test::two_link_arm;
+
+/// A library that computes with a description changed by `wrong`: what the check must catch.
+/// A library computing exactly (robots/dynamics.hpp in double) with the robot changed by
+/// `wrong`; with `declares`, it says it holds the changed robot (held_robot).
+audit::dynamics_library wrong_library(std::function<void(rb::robot&)> wrong, bool declares = false) {
+  struct model final : audit::dynamics_model {
+    rb::robot held;
+    rb::robot_model<double> m;
+    bool declares;
+    model(rb::robot r, bool d) : held(r), m(std::move(r)), declares(d) {}
+    std::optional<rb::robot> held_robot() const override { return declares ? std::optional<rb::robot>(held) : std::nullopt; }
+    std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override { return rb::mass_matrix(m, q); }
+    std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd& q, const Eigen::VectorXd& v) override {
+      return rb::bias_forces(m, q, v);
+    }
+    std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                           const Eigen::VectorXd& a) override {
+      return rb::inverse_dynamics(m, q, v, a);
+    }
+    std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                           const Eigen::VectorXd& t) override {
+      return rb::forward_dynamics(m, q, v, t);
+    }
+  };
+  audit::dynamics_library l;
+  l.name = "wrong";
+  l.sets_armature = l.sets_damping = true;  // it computes with the robot's own numbers
+  l.load = [wrong, declares](const rb::robot& r) -> std::unique_ptr<audit::dynamics_model> {
+    rb::robot changed = r;
+    wrong(changed);
+    return std::make_unique<model>(changed, declares);
+  };
+  return l;
+}
+
+audit::dynamics_state state_of(const generators::robot_case& c) {
+  audit::dynamics_state x;
+  x.q = generators::to_tier<double>(c.q);
+  x.qdot = generators::to_tier<double>(c.qdot);
+  x.qddot = generators::to_tier<double>(c.qddot);
+  x.tau = generators::to_tier<double>(c.tau);
+  return x;
+}
+
+TEST(dynamics_audit, the_reference_in_double_is_within_its_budget_and_wrong_libraries_are_not) {
+  // The reference's own double evaluation passes; a transposed inertia rotation, an axis
+  // taken in the parent's frame and a parallel-axis sign each fail on the arm.
+  const rb::robot arm = [] {
+    rb::robot r = two_link_arm(2, 1.5, 1, 0.5, 0.375, 0.25, 0.0625);
+    r.links[2].body->origin.rpy = {0.3, -0.2, 0.5};
+    r.links[2].body->inertia << 0.125, 0.01, 0, 0.01, 0.0625, 0.02, 0, 0.02, 0.09;
+    r.joints[1].origin.rpy = {0, 0.4, 0};
+    r.joints[1].axis = Eigen::Vector3d(0.6, 0.8, 0);
+    return r;
+  }();
+  audit::dynamics_state x;
+  x.q = Eigen::Vector2d(0.3, -0.7);
+  x.qdot = Eigen::Vector2d(1.1, 0.4);
+  x.qddot = Eigen::Vector2d(-0.5, 2.0);
+  x.tau = Eigen::Vector2d(3.0, -1.0);
+  const audit::dynamics_check right = audit::check_dynamics(wrong_library([](rb::robot&) {}), arm, x);
+  ASSERT_EQ(right.residuals.size(), 4u);
+  for (const auto& r : right.residuals)
+    EXPECT_TRUE(r.within()) << audit::dynamics_quantity_name(r.quantity) << ": " << r.residual << " eps";
+  const auto fails = [&](const char* what, std::function<void(rb::robot&)> change) {
+    const audit::dynamics_check c = audit::check_dynamics(wrong_library(change), arm, x);
+    bool any = false;
+    for (const auto& r : c.residuals) any = any || !r.within();
+    EXPECT_TRUE(any) << what;
+  };
+  fails("a transposed inertia rotation", [](rb::robot& r) {
+    r.links[2].body->origin.rpy = -r.links[2].body->origin.rpy;
+  });
+  fails("the axis in the parent's frame", [](rb::robot& r) {
+    r.joints[1].axis = rb::rpy_rotation<double>(r.joints[1].origin.rpy) * r.joints[1].axis;
+  });
+  fails("the centre of mass on the other side", [](rb::robot& r) { r.links[1].body->origin.xyz *= -1; });
+}
+
+TEST(dynamics_audit, a_library_that_holds_another_robot_is_judged_on_it_and_the_difference_measured) {
+  // MuJoCo's compiler changes a link's inertia by about 1e-8 relative (docs/findings/dynamics.md):
+  // a library that computes exactly with such a changed robot disagrees with the given robot's
+  // Lagrangian unless it says which robot it holds; then it agrees with that robot's, and the
+  // distance between the two robots' mass matrices is measured in eps of the scale.
+  const rb::robot arm = two_link_arm(2, 1.5, 1, 0.5, 0.375, 0.25, 0.0625);
+  audit::dynamics_state x;
+  x.q = Eigen::Vector2d(0.3, -0.7);
+  x.qdot = Eigen::Vector2d(1.1, 0.4);
+  x.qddot = Eigen::Vector2d(-0.5, 2.0);
+  x.tau = Eigen::Vector2d(3.0, -1.0);
+  const double delta = 0x1p-26;  // 1.5e-8 of the forearm's moment about its hinge (y), 1/16
+  const auto changed = [delta](rb::robot& r) { r.links[2].body->inertia(1, 1) *= 1 + delta; };
+  const audit::dynamics_check silent = audit::check_dynamics(wrong_library(changed), arm, x);
+  EXPECT_FALSE(silent.model_difference);
+  bool any = false;
+  for (const auto& r : silent.residuals) any = any || !r.within();
+  EXPECT_TRUE(any) << "a changed robot not declared";
+  const audit::dynamics_check declared = audit::check_dynamics(wrong_library(changed, true), arm, x);
+  for (const auto& r : declared.residuals)
+    EXPECT_TRUE(r.within()) << audit::dynamics_quantity_name(r.quantity) << ": " << r.residual << " eps";
+  ASSERT_TRUE(declared.model_difference);
+  // Every entry of M holds i2 once (both hinges are about y): the change is delta i2 = 2^-30
+  // exactly, over eps and the scale of M; each M is rounded once to double before the
+  // difference, half an ulp of its largest entry each: under 1 eps of the scale together.
+  const double want = 0x1p-30 / (0x1p-52 * declared.model_scale);
+  EXPECT_NEAR(*declared.model_difference, want, 1.0);
+}
+
+TEST(dynamics_audit, every_library_gives_the_two_link_arms_closed_form) {
+  const double m1 = 2, m2 = 1.5, l1 = 1, c1 = 0.5, c2 = 0.375, i1 = 0.25, i2 = 0.0625, g = 9.81;
+  const rb::robot r = two_link_arm(m1, m2, l1, c1, c2, i1, i2);
+  audit::dynamics_state x;
+  x.q = Eigen::Vector2d(0.3, -0.7);
+  x.qdot = Eigen::Vector2d(1.1, 0.4);
+  x.qddot = Eigen::Vector2d(-0.5, 2.0);
+  x.tau = Eigen::Vector2d(3.0, -1.0);
+  const arm_closed_form want = arm_terms(m1, m2, l1, c1, c2, i1, i2, g, Eigen::Vector2d(x.q), Eigen::Vector2d(x.qdot));
+  for (const audit::dynamics_library& library : audit::dynamics_found()) {
+    const audit::dynamics_check c = audit::check_dynamics(library, r, x);
+    ASSERT_TRUE(c.refused.empty()) << library.name << ": " << c.refused;
+    // Every library offers forward dynamics; Bullet's core nothing else.
+    ASSERT_FALSE(c.residuals.empty()) << library.name;
+    EXPECT_EQ(c.residuals.back().quantity, audit::dynamics_quantity::forward) << library.name;
+    EXPECT_EQ(c.residuals.size(), library.name == "bullet" ? 1u : 4u) << library.name;
+    if (c.residuals[0].quantity == audit::dynamics_quantity::mass_matrix)
+      EXPECT_LE((c.residuals[0].library - want.m).cwiseAbs().maxCoeff(), 32 * 0x1p-52 * want.m.cwiseAbs().maxCoeff())
+          << library.name;
+    for (const auto& res : c.residuals)
+      EXPECT_TRUE(res.within()) << library.name << ": " << audit::dynamics_quantity_name(res.quantity) << ": "
+                                << res.residual << " eps of budget " << res.budget;
+  }
+}
+
+TEST(dynamics_audit, armature_and_damping_join_the_closed_form_where_a_library_sets_them_and_are_refused_where_not) {
+  // A rotor's armature a adds a qdot^2 / 2 to T, so a to M's diagonal; viscous damping b adds
+  // b qdot to h (the generalized force -b qdot). The arm's closed form with both, in the
+  // reference and in every library whose adapter sets them (MuJoCo both, KDL the armature:
+  // its solvers read no damping); the others refuse the robot naming the joint and the term.
+  const double m1 = 2, m2 = 1.5, l1 = 1, c1 = 0.5, c2 = 0.375, i1 = 0.25, i2 = 0.0625, g = 9.81;
+  const Eigen::Vector2d armature(0.125, 0.03125), damping(0.5, 0.25);
+  rb::robot r = two_link_arm(m1, m2, l1, c1, c2, i1, i2);
+  for (int k = 0; k < 2; ++k) {
+    r.joints[std::size_t(k)].armature = armature(k);
+    r.joints[std::size_t(k)].damping = damping(k);
+  }
+  audit::dynamics_state x;
+  x.q = Eigen::Vector2d(0.3, -0.7);
+  x.qdot = Eigen::Vector2d(1.1, 0.4);
+  x.qddot = Eigen::Vector2d(-0.5, 2.0);
+  x.tau = Eigen::Vector2d(3.0, -1.0);
+  arm_closed_form want = arm_terms(m1, m2, l1, c1, c2, i1, i2, g, Eigen::Vector2d(x.q), Eigen::Vector2d(x.qdot));
+  want.m.diagonal() += armature;
+  want.h += damping.cwiseProduct(Eigen::Vector2d(x.qdot));
+  constexpr double eps = 0x1p-52;
+  const rb::robot_model<double> md(r);
+  const rb::motion_terms<double> d = rb::motion_terms_at(md, x.q, x.qdot);
+  EXPECT_LE((d.mass_matrix - want.m).cwiseAbs().maxCoeff(), 32 * eps * want.m.cwiseAbs().maxCoeff());
+  EXPECT_LE((d.bias - want.h).cwiseAbs().maxCoeff(), 32 * eps * (m1 + m2) * g * 2);
+  // The same in URDF: <dynamics damping friction armature> read back to the same doubles.
+  rb::robot with_friction = r;
+  with_friction.joints[0].friction = 0.75;
+  const rb::robot back = audit::parse_urdf(audit::to_urdf(with_friction), "arm.urdf");
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(back.joints[k].armature, r.joints[k].armature);
+    EXPECT_EQ(back.joints[k].damping, r.joints[k].damping);
+  }
+  EXPECT_EQ(back.joints[0].friction, 0.75);
+  ASSERT_EQ(back.readings.size(), 1u);
+  EXPECT_NE(back.readings[0].find("friction 0.75"), std::string::npos) << back.readings[0];
+  rb::robot armature_only = r;
+  for (rb::joint& j : armature_only.joints) j.damping = 0;
+  int held = 0;
+  for (const audit::dynamics_library& library : audit::dynamics_found()) {
+    for (const rb::robot* robot : {&r, &armature_only}) {
+      const bool sets = library.sets_armature && (robot == &armature_only || library.sets_damping);
+      const audit::dynamics_check c = audit::check_dynamics(library, *robot, x);
+      if (!sets) {
+        EXPECT_TRUE(c.residuals.empty()) << library.name;
+        EXPECT_NE(c.refused.find("joint shoulder has "), std::string::npos) << library.name << ": " << c.refused;
+        EXPECT_NE(c.refused.find(library.name), std::string::npos) << c.refused;
+        continue;
+      }
+      ASSERT_TRUE(c.refused.empty()) << library.name << ": " << c.refused;
+      ASSERT_FALSE(c.residuals.empty()) << library.name;
+      ++held;
+      for (const auto& res : c.residuals)
+        EXPECT_TRUE(res.within()) << library.name << ": " << audit::dynamics_quantity_name(res.quantity) << ": "
+                                  << res.residual << " eps of budget " << res.budget;
+    }
+  }
+#ifdef MECHCHECK_HAVE_MUJOCO
+  EXPECT_GE(held, 2) << "MuJoCo sets both terms";
+#else
+  (void)held;
+#endif
+  // Wrong variants: the armature added twice, the damping dropped, the damping's sign flipped.
+  const auto fails = [&](const char* what, std::function<void(rb::robot&)> change) {
+    const audit::dynamics_check c = audit::check_dynamics(wrong_library(change), r, x);
+    bool any = false;
+    for (const auto& res : c.residuals) any = any || !res.within();
+    EXPECT_TRUE(any) << what;
+  };
+  fails("the armature added twice", [](rb::robot& w) {
+    for (rb::joint& j : w.joints) j.armature *= 2;
+  });
+  fails("the damping dropped", [](rb::robot& w) {
+    for (rb::joint& j : w.joints) j.damping = 0;
+  });
+  const audit::dynamics_check right = audit::check_dynamics(wrong_library([](rb::robot&) {}), r, x);
+  ASSERT_EQ(right.residuals.size(), 4u);
+  for (const auto& res : right.residuals) EXPECT_TRUE(res.within()) << res.residual;
+}
+
+TEST(dynamics_audit, every_library_holds_to_the_lagrangian_on_random_robots) {
+  // Every quantity within 16 n eps of its scale; a failure prints the minimal robot as URDF.
+  // 25 robots a library (ci/test runs the command on 100 more); a robot the library refuses
+  // by its own rule (MuJoCo's A + B >= C on the moments it computed) is not counted, and at
+  // least half must be run.
+  for (const audit::dynamics_library& library : audit::dynamics_found()) {
+    int run = 0;
+    EXPECT_EQ(seeded_check(25, [&library, &run] {
+                const generators::robot_case c = *generators::robot_cases(8);
+                const audit::dynamics_check check = audit::check_dynamics(library, c.robot, state_of(c));
+                if (!check.refused.empty()) return;
+                ++run;
+                for (const auto& r : check.residuals)
+                  if (!r.within())
+                    RC_FAIL(library.name + ": " + audit::dynamics_quantity_name(r.quantity) + ": residual " +
+                            std::to_string(r.residual) + " eps of its scale " + std::to_string(r.scale) + ", budget " +
+                            std::to_string(r.budget) + "\nthe robot:\n" + audit::to_urdf(c.robot));
+              }),
+              "")
+        << library.name;
+    EXPECT_GE(run, 13) << library.name << " refused " << 25 - run << " of 25 robots";
+  }
+}
+
+/// A chain of revolute joints about skew axes, links of masses `masses` (each 0.4 below its
+/// hinge, the next hinge 0.5 below): the robots of the budget and scale tests.
+rb::robot chain(const std::vector<double>& masses) {
+  rb::robot r;
+  r.name = "chain";
+  r.links.push_back({"base", std::nullopt});
+  for (std::size_t k = 0; k < masses.size(); ++k) {
+    rb::inertial b;
+    b.mass = masses[k];
+    b.origin.xyz = {0.05, 0, -0.4};
+    b.inertia = Eigen::Vector3d(0.02, 0.03, 0.01).asDiagonal();
+    b.inertia *= masses[k];
+    r.links.push_back({"l" + std::to_string(k), b});
+    rb::joint j;
+    j.name = "j" + std::to_string(k);
+    j.parent = k == 0 ? "base" : "l" + std::to_string(k - 1);
+    j.child = "l" + std::to_string(k);
+    if (k > 0) j.origin.xyz = {0, 0, -0.5};
+    j.axis = k % 2 ? Eigen::Vector3d(0, 0.6, 0.8) : Eigen::Vector3d(0.8, 0.6, 0);
+    r.joints.push_back(j);
+  }
+  return r;
+}
+
+audit::dynamics_state chain_state(int n, double sign = 1) {
+  audit::dynamics_state x;
+  x.q = x.qdot = x.qddot = x.tau = Eigen::VectorXd(n);
+  for (int i = 0; i < n; ++i) {
+    x.q(i) = 0.3 - 0.2 * i;
+    x.qdot(i) = 0.7 + 0.1 * i;
+    x.qddot(i) = sign * (1.5 - 0.5 * i);
+    x.tau(i) = sign * (2.0 - 0.75 * i);
+  }
+  return x;
+}
+
+/// A library that returns the reference of `quantity`, rounded once, with `eps_off` eps of
+/// its scale added to the first entry: an error of a known size.
+audit::dynamics_library off_by(audit::dynamics_quantity quantity, const audit::dynamics_state& x, double eps_off) {
+  struct model final : audit::dynamics_model {
+    audit::dynamics_quantity quantity;
+    Eigen::MatrixXd value;
+    std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd&) override {
+      return quantity == audit::dynamics_quantity::mass_matrix ? std::optional<Eigen::MatrixXd>(value) : std::nullopt;
+    }
+    std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd&, const Eigen::VectorXd&) override {
+      return quantity == audit::dynamics_quantity::bias ? std::optional<Eigen::VectorXd>(value.col(0)) : std::nullopt;
+    }
+    std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd&, const Eigen::VectorXd&, const Eigen::VectorXd&) override {
+      return quantity == audit::dynamics_quantity::inverse ? std::optional<Eigen::VectorXd>(value.col(0)) : std::nullopt;
+    }
+    std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd&, const Eigen::VectorXd&, const Eigen::VectorXd&) override {
+      return quantity == audit::dynamics_quantity::forward ? std::optional<Eigen::VectorXd>(value.col(0)) : std::nullopt;
+    }
+  };
+  audit::dynamics_library l;
+  l.name = "off_by";
+  l.load = [quantity, x, eps_off](const rb::robot& r) -> std::unique_ptr<audit::dynamics_model> {
+    const audit::dynamics_residual ref = audit::reference_only(quantity, r, x);
+    auto m = std::make_unique<model>();
+    m->quantity = quantity;
+    m->value = ref.reference;
+    m->value(0, 0) += eps_off * 0x1p-52 * ref.scale;
+    return m;
+  };
+  return l;
+}
+
+TEST(dynamics_audit, the_budget_is_16_n_eps_of_the_scale_and_an_error_a_few_times_it_disagrees) {
+  // A 4-link chain: budget 16 n = 64 eps of each quantity's scale. An error of 48 eps is
+  // within it, 100 eps (between the budget and a few times it) is not, for every quantity.
+  const rb::robot r = chain({1.0, 0.8, 0.6, 0.5});
+  const audit::dynamics_state x = chain_state(4);
+  for (const auto q : {audit::dynamics_quantity::mass_matrix, audit::dynamics_quantity::bias,
+                       audit::dynamics_quantity::inverse, audit::dynamics_quantity::forward}) {
+    SCOPED_TRACE(audit::dynamics_quantity_name(q));
+    const audit::dynamics_check inside = audit::check_dynamics(off_by(q, x, 48), r, x);
+    ASSERT_EQ(inside.residuals.size(), 1u);
+    EXPECT_EQ(inside.residuals[0].budget, 64);
+    EXPECT_NEAR(inside.residuals[0].residual, 48, 1);
+    EXPECT_TRUE(inside.residuals[0].within());
+    const audit::dynamics_check outside = audit::check_dynamics(off_by(q, x, 100), r, x);
+    EXPECT_NEAR(outside.residuals[0].residual, 100, 1);
+    EXPECT_FALSE(outside.residuals[0].within());
+  }
+}
+
+TEST(dynamics_audit, the_forward_scale_carries_cond_m_on_an_ill_conditioned_robot) {
+  // Masses 1 and 2^-6 down a 2-link chain: cond(M) near 10^3. The forward dynamics' scale is
+  // cond(M) |qddot| + |M^-1| max(scale of h, |tau|) (docs/audit.md), all norms the largest row
+  // sum or component, computed here apart from the audit in mpfr50.
+  const rb::robot r = chain({1.0, 0x1p-6});
+  audit::dynamics_state x = chain_state(2);
+  const rb::robot_model<mpfr50> m(r);
+  dynamic_vector<mpfr50> q(2), v(2);
+  for (int i = 0; i < 2; ++i) q(i) = x.q(i), v(i) = x.qdot(i);
+  const auto terms = rb::motion_terms_at(m, q, v);
+  const dynamic_matrix<mpfr50> inv = terms.mass_matrix.inverse();
+  const auto row_sum = [](const dynamic_matrix<mpfr50>& a) {
+    mpfr50 best = 0;
+    for (Eigen::Index i = 0; i < a.rows(); ++i) best = std::max(best, mpfr50(a.row(i).cwiseAbs().sum()));
+    return static_cast<double>(best);
+  };
+  const double cond = row_sum(terms.mass_matrix) * row_sum(inv);
+  EXPECT_GT(cond, 100);
+  EXPECT_LT(cond, 3000);
+  dynamic_vector<mpfr50> tau(2);
+  for (int i = 0; i < 2; ++i) tau(i) = x.tau(i);
+  const dynamic_vector<mpfr50> qddot = inv * (tau - terms.bias);
+  const double qddot_max = static_cast<double>(mpfr50(qddot.cwiseAbs().maxCoeff()));
+  const double scale_h = audit::reference_only(audit::dynamics_quantity::bias, r, x).scale;
+  const double second = row_sum(inv) * std::max(scale_h, x.tau.cwiseAbs().maxCoeff());
+  // The cond(M) term is the larger here: a scale without it is off by more than a factor 2.
+  EXPECT_GT(cond * qddot_max, second);
+  const double scale = audit::reference_only(audit::dynamics_quantity::forward, r, x).scale;
+  EXPECT_NEAR(scale, cond * qddot_max + second, 1e-9 * scale);
+}
+
+TEST(dynamics_audit, a_second_check_at_the_same_q_and_qdot_uses_its_own_qddot_and_tau) {
+  // The reference is remembered across calls; two checks of one robot at the same q and qdot
+  // with other qddot and tau must each be held to their own inverse and forward dynamics.
+  const rb::robot r = chain({1.0, 0.8, 0.6});
+  const audit::dynamics_state first = chain_state(3, 1), second = chain_state(3, -1);
+  const audit::dynamics_library exact = wrong_library([](rb::robot&) {});
+  const audit::dynamics_check a = audit::check_dynamics(exact, r, first);
+  const audit::dynamics_check b = audit::check_dynamics(exact, r, second);
+  ASSERT_EQ(a.residuals.size(), 4u);
+  ASSERT_EQ(b.residuals.size(), 4u);
+  for (const auto* c : {&a, &b})
+    for (const auto& res : c->residuals)
+      EXPECT_TRUE(res.within()) << audit::dynamics_quantity_name(res.quantity) << ": " << res.residual << " eps";
+  // Inverse and forward dynamics differ between the two states; the mass matrix does not.
+  EXPECT_GT((a.residuals[2].reference - b.residuals[2].reference).cwiseAbs().maxCoeff(), 0.1);
+  EXPECT_GT((a.residuals[3].reference - b.residuals[3].reference).cwiseAbs().maxCoeff(), 0.1);
+  EXPECT_EQ(a.residuals[0].reference, b.residuals[0].reference);
+}
+
+TEST(dynamics_audit, a_users_robot_with_fixed_joints_gets_one_coordinate_per_moving_joint) {
+  // A user's URDF with two fixed joints among three moving ones, through the campaign's state
+  // generator (run_dynamics_on, the command's --urdf): three coordinates a state, every
+  // quantity within on every state.
+  rb::robot r = chain({1.0, 0.5, 0.7, 0.4, 0.6});
+  r.joints[1].type = rb::joint_type::fixed;
+  r.joints[3].type = rb::joint_type::fixed;
+  ASSERT_EQ(rb::validate(r).dofs, 3);
+  audit::dynamics_options opt;
+  opt.robots = 5;
+  const audit::dynamics_campaign c = audit::run_dynamics_on(wrong_library([](rb::robot&) {}), r, opt);
+  EXPECT_TRUE(c.agrees()) << c.note << c.disagreement;
+  EXPECT_EQ(c.robots, 5);
+  for (const auto& f : c.figures) {
+    EXPECT_EQ(f.checked, 5) << audit::dynamics_quantity_name(f.quantity);
+    EXPECT_EQ(audit::dynamics_verdict(c, f), "within");
+  }
+}
+
+TEST(dynamics_audit, a_disagreement_on_a_users_robot_prints_a_command_that_runs_with_its_file) {
+  // The command's --urdf campaign: the reproduction names the file as given (quoted for the
+  // shell), not a placeholder, and the seed the campaign ran with, once.
+  const rb::robot r = chain({1.0, 0.5});
+  audit::dynamics_options opt;
+  opt.robots = 3;
+  opt.seed = 7;
+  opt.urdf_file = "my arm.urdf";
+  const audit::dynamics_campaign c =
+      audit::run_dynamics_on(wrong_library([](rb::robot& x) { x.links.back().body->mass *= 2; }), r, opt);
+  ASSERT_FALSE(c.disagreement.empty());
+  EXPECT_NE(c.disagreement.find("(mechcheck-audit -o dynamics-case --urdf 'my arm.urdf' --robots 3 --seed 7 --dynamics wrong finds"),
+            std::string::npos) << c.disagreement;
+}
+
+TEST(dynamics_audit, a_campaign_that_stopped_never_clears_the_quantities_it_did_not_finish) {
+  // A library whose mass matrix is wrong: the campaign stops at its first disagreement. The
+  // other quantities were checked on the robots reached before it, not on the 40 asked for:
+  // they read "not cleared", with the count, never "within".
+  audit::dynamics_options opt;
+  opt.robots = 40;
+  const audit::dynamics_campaign c = audit::run_dynamics_campaign(
+      wrong_library([](rb::robot& r) {
+        for (auto& l : r.links)
+          if (l.body) l.body->inertia *= 1.001;
+      }),
+      opt);
+  ASSERT_FALSE(c.agrees());
+  EXPECT_TRUE(c.stopped());
+  EXPECT_EQ(c.asked, 40);
+  bool disagreed = false;
+  for (const auto& f : c.figures) {
+    const std::string v = audit::dynamics_verdict(c, f);
+    EXPECT_NE(v, "within") << audit::dynamics_quantity_name(f.quantity);
+    if (v == "DISAGREES") {
+      disagreed = true;
+      continue;
+    }
+    EXPECT_EQ(v.rfind("not ", 0), 0u) << v;
+    if (f.checked > 0)
+      EXPECT_NE(v.find(std::to_string(f.checked) + " of 40 robots"), std::string::npos) << v;
+  }
+  EXPECT_TRUE(disagreed);
+}
+
+}  // namespace dynamics_audit_test

@@ -1,0 +1,94 @@
+#pragma once
+// The planar two-link arm that the robots' tests and the dynamics audit's tests pin their
+// references to, its closed-form M and h, and a property run from MECHCHECK_SEED's seed.
+
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <utility>
+
+#include <Eigen/Core>
+#include <rapidcheck.h>
+
+#include "mechcheck/robots.hpp"
+
+namespace robots_test {
+namespace rb = mechcheck::robots;
+
+/// A property over `cases` random cases from MECHCHECK_SEED's seed (20261126 without it):
+/// "" when it holds, else the shrunk counterexample's message (RapidCheck's report).
+template <class F>
+std::string seeded_check(int cases, F&& property) {
+  rc::detail::TestParams params;
+  params.maxSuccess = cases;
+  const char* seed = std::getenv("MECHCHECK_SEED");
+  params.seed = seed && *seed ? std::strtoull(seed, nullptr, 10) : 20261126;
+  const rc::detail::TestResult outcome = rc::detail::checkTestable(std::forward<F>(property), rc::detail::TestMetadata{}, params);
+  rc::detail::FailureResult failure;
+  if (outcome.match(failure)) {
+    std::ostringstream s;
+    s << failure;
+    return s.str();
+  }
+  rc::detail::GaveUpResult gave_up;
+  if (outcome.match(gave_up)) return "gave up: " + gave_up.description;
+  return "";
+}
+
+/// A planar two-link arm hinged about y, hanging along -z: link lengths l1 (the elbow at
+/// (0, 0, -l1) in the upper arm's frame), centres of mass c1, c2 below their hinges,
+/// moments about y I1, I2 (the others arbitrary).
+inline rb::robot two_link_arm(double m1, double m2, double l1, double c1, double c2, double i1, double i2) {
+  rb::robot r;
+  r.name = "two_link_arm";
+  r.links.push_back({"base", std::nullopt});
+  rb::inertial a;
+  a.mass = m1;
+  a.origin.xyz = {0, 0, -c1};
+  a.inertia = Eigen::Vector3d(0.5, i1, 0.25).asDiagonal();
+  r.links.push_back({"upper", a});
+  rb::inertial b = a;
+  b.mass = m2;
+  b.origin.xyz = {0, 0, -c2};
+  b.inertia = Eigen::Vector3d(0.125, i2, 0.0625).asDiagonal();
+  r.links.push_back({"fore", b});
+  rb::joint shoulder;
+  shoulder.name = "shoulder";
+  shoulder.parent = "base";
+  shoulder.child = "upper";
+  shoulder.axis = {0, 1, 0};
+  r.joints.push_back(shoulder);
+  rb::joint elbow = shoulder;
+  elbow.name = "elbow";
+  elbow.parent = "upper";
+  elbow.child = "fore";
+  elbow.origin.xyz = {0, 0, -l1};
+  r.joints.push_back(elbow);
+  return r;
+}
+
+struct arm_closed_form {
+  Eigen::Matrix2d m;
+  Eigen::Vector2d h;
+};
+
+/// The arm's M and h (Spong, Hutchinson and Vidyasagar, Robot Modeling and Control, 7.4.2,
+/// with angles about +y from the downward vertical): rotation about +y takes -z towards -x,
+/// so a link's centre of mass is at height -c cos(angle) and V = -sum m g c cos(angle).
+inline arm_closed_form arm_terms(double m1, double m2, double l1, double c1, double c2, double i1, double i2, double g,
+                          const Eigen::Vector2d& q, const Eigen::Vector2d& qdot) {
+  const double c = std::cos(q(1)), s = std::sin(q(1));
+  arm_closed_form out;
+  out.m(0, 0) = m1 * c1 * c1 + i1 + m2 * (l1 * l1 + c2 * c2 + 2 * l1 * c2 * c) + i2;
+  out.m(0, 1) = out.m(1, 0) = m2 * (c2 * c2 + l1 * c2 * c) + i2;
+  out.m(1, 1) = m2 * c2 * c2 + i2;
+  const double k = m2 * l1 * c2 * s;
+  out.h(0) = -k * (2 * qdot(0) * qdot(1) + qdot(1) * qdot(1)) + m1 * g * c1 * std::sin(q(0)) +
+             m2 * g * (l1 * std::sin(q(0)) + c2 * std::sin(q(0) + q(1)));
+  out.h(1) = k * qdot(0) * qdot(0) + m2 * g * c2 * std::sin(q(0) + q(1));
+  return out;
+}
+
+}  // namespace robots_test
