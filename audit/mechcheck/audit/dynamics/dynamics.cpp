@@ -139,6 +139,18 @@ dynamics_check check_dynamics(const dynamics_library& library, const robots::rob
     return out;
   }
   const std::optional<robots::robot> held = model->held_robot();
+  // The held robot is judged on its own Lagrangian: a joint term its model builder dropped or
+  // changed would pass unseen there (model_difference compares M only), so it is refused.
+  if (held)
+    for (const robots::joint& j : robot.joints)
+      for (const robots::joint& k : held->joints)
+        if (k.name == j.name && j.type != robots::joint_type::fixed &&
+            (k.armature != j.armature || k.damping != j.damping)) {
+          out.refused = library.name + " holds joint " + j.name + " with armature " + to_text(k.armature) +
+                        " and damping " + to_text(k.damping) + " where the robot gives " + to_text(j.armature) +
+                        " and " + to_text(j.damping);
+          return out;
+        }
   const exact_terms e = exact_remembered(held ? *held : robot, x);
   if (held) {
     const exact_terms given = exact_remembered(robot, x);
