@@ -45,6 +45,58 @@ TEST(robots, the_lagrangian_gives_the_two_link_arms_closed_form_in_double_and_mp
             1e-13);
 }
 
+TEST(robots, the_recursive_algorithms_give_the_two_link_arms_closed_form_with_its_rotors_and_damping) {
+  const double m1 = 2, m2 = 1.5, l1 = 1, c1 = 0.5, c2 = 0.375, i1 = 0.25, i2 = 0.0625, g = 9.81;
+  rb::robot r = two_link_arm(m1, m2, l1, c1, c2, i1, i2);
+  r.joints[0].armature = 0.125;
+  r.joints[1].damping = 0.75;
+  const Eigen::Vector2d q(0.3, -0.7), qdot(1.1, 0.4), qddot(-0.5, 2.0);
+  arm_closed_form want = arm_terms(m1, m2, l1, c1, c2, i1, i2, g, q, qdot);
+  want.m(0, 0) += 0.125;
+  want.h(1) += 0.75 * qdot(1);
+  const rb::robot_model<double> md(r);
+  const Eigen::VectorXd qv = q, qdotv = qdot, qddotv = qddot;
+  constexpr double eps = 0x1p-52;
+  // Both sides evaluated in double: 32 eps of the terms' scale, as the Lagrangian's test.
+  EXPECT_LE((rb::recursive_mass_matrix(md, qv) - want.m).cwiseAbs().maxCoeff(), 32 * eps * want.m.cwiseAbs().maxCoeff());
+  EXPECT_LE((rb::recursive_bias(md, qv, qdotv) - want.h).cwiseAbs().maxCoeff(), 32 * eps * (m1 + m2) * g * 2);
+  const Eigen::Vector2d tau = want.m * qddot + want.h;
+  EXPECT_LE((rb::recursive_inverse_dynamics(md, qv, qdotv, qddotv) - tau).cwiseAbs().maxCoeff(),
+            32 * eps * ((m1 + m2) * g * 2 + 2 * want.m.cwiseAbs().maxCoeff() * 2));
+}
+
+TEST(robots, the_recursive_algorithms_refuse_a_state_of_the_wrong_size_or_not_finite) {
+  const rb::robot_model<double> m(two_link_arm(2, 1.5, 1, 0.5, 0.375, 0.25, 0.0625));
+  const Eigen::VectorXd two = Eigen::Vector2d(0.3, -0.7), three = Eigen::Vector3d(0, 0, 0);
+  Eigen::VectorXd nan = two;
+  nan(1) = std::nan("");
+  EXPECT_THROW(rb::recursive_mass_matrix(m, three), dimension_error);
+  EXPECT_THROW(rb::recursive_bias(m, two, three), dimension_error);
+  EXPECT_THROW(rb::recursive_inverse_dynamics(m, two, two, three), dimension_error);
+  EXPECT_THROW(rb::recursive_mass_matrix(m, nan), non_finite_error);
+  EXPECT_THROW(rb::recursive_bias(m, two, nan), non_finite_error);
+  EXPECT_THROW(rb::recursive_inverse_dynamics(m, two, two, nan), non_finite_error);
+}
+
+/// On trees larger than the laws' four links (up to twelve, branching, sliding, fixed joints):
+/// the recursive M and h against the Lagrangian's in double, k = 128 n on term_scales, as the
+/// law robots.recursive_dynamics.
+TEST(robots, the_recursive_algorithms_agree_with_the_lagrangian_on_random_trees_of_twelve_links) {
+  const std::string failure = seeded_check(20, [] {
+    const generators::robot_case c = *generators::robot_cases(12);
+    const rb::robot_model<double> m(c.robot);
+    const Eigen::VectorXd q = Eigen::Map<const Eigen::VectorXd>(c.q.data(), Eigen::Index(c.q.size()));
+    const Eigen::VectorXd qdot = Eigen::Map<const Eigen::VectorXd>(c.qdot.data(), Eigen::Index(c.qdot.size()));
+    const rb::motion_terms<double> e = rb::motion_terms_at(m, q, qdot);
+    const rb::term_scale ts = rb::term_scales(m, q);
+    const double inertia = std::max(e.mass_matrix.cwiseAbs().maxCoeff(), ts.inertia);
+    const double v = qdot.cwiseAbs().maxCoeff(), k = 128.0 * m.dofs() * 0x1p-52;
+    RC_ASSERT((rb::recursive_mass_matrix(m, q) - e.mass_matrix).cwiseAbs().maxCoeff() <= k * inertia);
+    RC_ASSERT((rb::recursive_bias(m, q, qdot) - e.bias).cwiseAbs().maxCoeff() <= k * (ts.gravity + inertia * v * v));
+  });
+  EXPECT_EQ(failure, "");
+}
+
 TEST(robots, the_kinematics_give_the_two_link_arms_closed_form) {
   // The arm turns about y and hangs along -z: R_y(a) takes (0, 0, -d) to (-d sin a, 0, -d cos a).
   // A point p = (0, 0, -d) of the forearm is at x = -(l1 s1 + d s12, 0, l1 c1 + d c12), with

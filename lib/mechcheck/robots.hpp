@@ -4,4 +4,5 @@
 /// in any tier.
 #include "mechcheck/robots/dynamics.hpp"
 #include "mechcheck/robots/kinematics.hpp"
+#include "mechcheck/robots/recursive.hpp"
 #include "mechcheck/robots/robot.hpp"

@@ -11,27 +11,13 @@ struct energy_balance {
             "(the Euler-Lagrange equations with generalized forces)",
             {"1", "68"}};
   }
-  // Every moving joint draws an armature in [0, 1/4] kg m^2 (or kg) and a damping in [0, 2]
-  // N m s/rad (or N s/m), dyadic (exact in every tier), zero about a third of the time each:
-  // one generated value, so that a counterexample prints the robot with its terms.
-  static rc::Gen<gen::robot_case> dressed_cases() {
-    return rc::gen::exec([] {
-      gen::robot_case c = *gen::robot_cases(4);
-      for (rb::joint& j : c.robot.joints) {
-        if (j.type == rb::joint_type::fixed) continue;
-        j.armature = std::max(0, *rc::gen::inRange(-8, 17)) / 64.0;
-        j.damping = std::max(0, *rc::gen::inRange(-16, 33)) / 16.0;
-      }
-      return c;
-    });
-  }
   // qddot = M^-1 (tau - h) by Cholesky (error cond(M) n eps); dE/dt = dE/dq qdot +
   // dE/dqdot qddot by AD of E = T + V computed from the links (the nested-AD evaluation the
   // jet of L uses: one instantiation of the kinematics a tier). k = 64 n cond(M) on |qdot|
   // times the forces' terms before they cancel.
   template <class T>
   static void property() {
-    const robot_sample<T> s(*dressed_cases());
+    const robot_sample<T> s(*dressed_robot_cases());
     const rb::robot_lagrangian<T> lag{&s.model};
     const rb::motion_terms<T> e = rb::motion_terms_at(s.model, s.q, s.qdot);
     const Eigen::LLT<dynamic_matrix<T>> llt(e.mass_matrix);

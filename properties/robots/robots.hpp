@@ -10,6 +10,7 @@
 /// M, times |qdot|^2 for the velocity terms, sum m |g| lever for gravity), and the
 /// forward dynamics through a Cholesky solve adds cond(M).
 
+#include <algorithm>
 #include <cmath>
 #include "mechcheck/harness/generators.hpp"
 #include "mechcheck/harness/law.hpp"
@@ -44,6 +45,22 @@ struct robot_sample {
 template <class T>
 robot_sample<T> draw_robot() {
   return robot_sample<T>(*gen::robot_cases(4));
+}
+
+/// A random robot of at most 4 links whose every moving joint draws an armature in [0, 1/4]
+/// kg m^2 (or kg) and a damping in [0, 2] N m s/rad (or N s/m), dyadic (exact in every tier),
+/// zero about a third of the time each: one generated value, so that a counterexample prints
+/// the robot with its terms.
+inline rc::Gen<gen::robot_case> dressed_robot_cases() {
+  return rc::gen::exec([] {
+    gen::robot_case c = *gen::robot_cases(4);
+    for (rb::joint& j : c.robot.joints) {
+      if (j.type == rb::joint_type::fixed) continue;
+      j.armature = std::max(0, *rc::gen::inRange(-8, 17)) / 64.0;
+      j.damping = std::max(0, *rc::gen::inRange(-16, 33)) / 16.0;
+    }
+    return c;
+  });
 }
 
 template <class T>
