@@ -1,7 +1,8 @@
 // The equations of motion's cost (docs/performance.md, "Equations of motion"): each
 // dynamics library's call per quantity on the same 32 random robots of 1 to 8 links (seed 1,
 // generators::robot_cases), each library's model of each robot built once; beside it the
-// exact reference's (robots/dynamics.hpp: nested AD of the Lagrangian) in double and in
+// exact reference's (robots/dynamics.hpp: nested AD of the Lagrangian; robots/recursive.hpp:
+// composite rigid bodies and Newton-Euler, how the audit evaluates it) in double and in
 // mpfr50, the tier the audit holds the libraries to. A robot a library refuses is left out
 // of its figures (the counter "robots" says how many it ran). And the campaign of
 // ci/reports' command at full size: 1 000 robots through every library and quantity, with
@@ -100,8 +101,9 @@ void library_quantity(benchmark::State& state, const audit::dynamics_library& li
   state.counters["robots"] = static_cast<double>(models.size());
 }
 
-/// The reference's M and h together (one nested-AD jet of L) in tier T.
-template <class T>
+/// The Lagrangian's M and h together (one nested-AD jet of L) in tier T, or (recursive) M by
+/// composite rigid bodies and h by Newton-Euler, the audit's way of evaluating them.
+template <class T, bool recursive>
 void reference(benchmark::State& state) {
   std::vector<rb::robot_model<T>> models;
   std::vector<audit::dynamics_state> states;
@@ -111,9 +113,16 @@ void reference(benchmark::State& state) {
   }
   for (auto _ : state)  // no cache to defeat: each call computes
     for (std::size_t i = 0; i < models.size(); ++i) {
-      const auto e = rb::motion_terms_at(models[i], mechcheck::dynamic_vector<T>(states[i].q.template cast<T>()),
-                                         mechcheck::dynamic_vector<T>(states[i].qdot.template cast<T>()));
-      benchmark::DoNotOptimize(e);
+      const mechcheck::dynamic_vector<T> q = states[i].q.template cast<T>(), qdot = states[i].qdot.template cast<T>();
+      if constexpr (recursive) {
+        const auto m = rb::recursive_mass_matrix(models[i], q);
+        const auto h = rb::recursive_bias(models[i], q, qdot);
+        benchmark::DoNotOptimize(m);
+        benchmark::DoNotOptimize(h);
+      } else {
+        const auto e = rb::motion_terms_at(models[i], q, qdot);
+        benchmark::DoNotOptimize(e);
+      }
     }
   state.SetItemsProcessed(state.iterations() * static_cast<long>(models.size()));
 }
@@ -141,8 +150,11 @@ const int registered = [] {
       benchmark::RegisterBenchmark(name.c_str(), [&library, q](benchmark::State& s) { library_quantity(s, library, q); })
           ->Unit(benchmark::kMicrosecond);
     }
-  benchmark::RegisterBenchmark("reference/M_and_h/double", &reference<double>)->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("reference/M_and_h/mpfr50", &reference<mechcheck::mpfr50>)->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("reference/M_and_h/double", &reference<double, false>)->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("reference/M_and_h/mpfr50", &reference<mechcheck::mpfr50, false>)->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("reference/recursive_M_and_h/double", &reference<double, true>)->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("reference/recursive_M_and_h/mpfr50", &reference<mechcheck::mpfr50, true>)
+      ->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark("campaign/every_library", &campaign)->Arg(1000)->Iterations(1)->Unit(benchmark::kSecond);
   return 0;
 }();

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <utility>
 
 #include <rapidcheck.h>
 
@@ -76,6 +77,33 @@ TEST(robots, the_recursive_algorithms_refuse_a_state_of_the_wrong_size_or_not_fi
   EXPECT_THROW(rb::recursive_mass_matrix(m, nan), non_finite_error);
   EXPECT_THROW(rb::recursive_bias(m, two, nan), non_finite_error);
   EXPECT_THROW(rb::recursive_inverse_dynamics(m, two, two, nan), non_finite_error);
+}
+
+/// A compiled inertia read back (a library's, MuJoCo's held robot) may be a few eps off
+/// symmetric, as validate() allows: T sees only its symmetric part, and so must Euler's
+/// equations in Newton-Euler, or the two references part by the asymmetry (1e-16 of |h| on
+/// MuJoCo's held robots, before the model kept the symmetric part).
+TEST(robots, an_inertia_a_few_eps_off_symmetric_gives_the_same_recursive_and_lagrangian_terms) {
+  // The elbow turned to hinge about x, so that the forearm turns about two axes at once and
+  // w x I w and I alpha reach I's off-diagonal entries.
+  rb::robot r = two_link_arm(2, 1.5, 1, 0.5, 0.375, 0.25, 0.0625);
+  r.joints[1].axis = {1, 0, 0};
+  for (auto& link : r.links)
+    if (link.body) {
+      link.body->inertia = Eigen::Vector3d(0.5, 0.375, 0.25).asDiagonal();
+      for (const auto& [i, j] : {std::pair{0, 1}, std::pair{0, 2}, std::pair{1, 2}}) {
+        link.body->inertia(i, j) = 0.03125;
+        link.body->inertia(j, i) = 0.03125 * (1 + 0x1p-50);
+      }
+    }
+  const rb::robot_model<mpfr50> m(r);
+  const dynamic_vector<mpfr50> q = Eigen::Vector2d(0.3, -0.7).cast<mpfr50>(), qdot = Eigen::Vector2d(1.1, 0.4).cast<mpfr50>();
+  const rb::motion_terms<mpfr50> e = rb::motion_terms_at(m, q, qdot);
+  const dynamic_matrix<mpfr50> dm = rb::recursive_mass_matrix(m, q) - e.mass_matrix;
+  const dynamic_vector<mpfr50> dh = rb::recursive_bias(m, q, qdot) - e.bias;
+  // 64 eps of mpfr50 on the terms (|M| and |h| below 100 here).
+  EXPECT_LT(static_cast<double>(dm.cwiseAbs().maxCoeff()), 1e-44);
+  EXPECT_LT(static_cast<double>(dh.cwiseAbs().maxCoeff()), 1e-44);
 }
 
 /// On trees larger than the laws' four links (up to twelve, branching, sliding, fixed joints):

@@ -81,7 +81,11 @@ struct robot_model {
       mass.push_back(T(l.body->mass));
       com.push_back(l.body->origin.xyz.cast<T>());
       const matrix3<T> ro = rpy_rotation<T>(l.body->origin.rpy);
-      const matrix3<T> i = l.body->inertia.cast<T>();
+      // Its symmetric part: validate() lets a tensor be 64 eps off symmetric (a library's
+      // compiled inertia read back), which T = w^T I w / 2 does not see and Euler's
+      // I alpha + w x I w (robots/recursive.hpp) would.
+      const matrix3<T> given = l.body->inertia.cast<T>();
+      const matrix3<T> i = matrix3<T>((given + matrix3<T>(given.transpose())) / T(2));
       const matrix3<T> ri = ro * i;
       inertia.push_back(ri * ro.transpose());
     }

@@ -13,6 +13,7 @@
 
 #include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/robots/dynamics.hpp"
+#include "mechcheck/robots/recursive.hpp"
 
 namespace mechcheck::audit {
 
@@ -177,19 +178,22 @@ reference_terms reference_terms_at(const robots::robot& robot, const dynamics_st
       throw dimension_error("check_dynamics: robot " + robot.name + " has " + std::to_string(n) +
                             " coordinates, a state vector has " + std::to_string(v->size()));
   const dynamic_vector<mpfr50> q = widened<mpfr50>(x.q), qdot = widened<mpfr50>(x.qdot);
-  const robots::motion_terms<mpfr50> e = robots::motion_terms_at(m, q, qdot);
+  // The Lagrangian's M and h, computed by composite rigid bodies and Newton-Euler
+  // (robots/recursive.hpp: held to the nested AD of L within a few eps in every tier by
+  // robots.recursive_dynamics), at a cost that grows like n depth instead of L's n^3.
   reference_terms out;
-  out.mass = e.mass_matrix;
-  out.bias = e.bias;
-  out.tau = e.mass_matrix * widened<mpfr50>(x.qddot) + e.bias;
-  const Eigen::LLT<dynamic_matrix<mpfr50>> llt(e.mass_matrix);
+  out.mass = robots::recursive_mass_matrix(m, q);
+  out.bias = robots::recursive_bias(m, q, qdot);
+  out.tau = out.mass * widened<mpfr50>(x.qddot) + out.bias;
+  const Eigen::LLT<dynamic_matrix<mpfr50>> llt(out.mass);
   if (llt.info() != Eigen::Success)
     throw singular_error("check_dynamics: robot " + robot.name + ": its mass matrix is not positive definite");
-  const dynamic_vector<mpfr50> rhs = widened<mpfr50>(x.tau) - e.bias;
+  const dynamic_vector<mpfr50> rhs = widened<mpfr50>(x.tau) - out.bias;
   out.qddot = llt.solve(rhs);
   // The scales, from the values rounded to double (a magnitude needs no more).
   const Eigen::MatrixXd mass = narrowed(out.mass), bias = narrowed(out.bias), qddot = narrowed(out.qddot);
-  const Eigen::MatrixXd gravity = narrowed(robots::gravity_forces(m, q));
+  const Eigen::MatrixXd gravity =
+      narrowed(robots::recursive_bias(m, q, dynamic_vector<mpfr50>(dynamic_vector<mpfr50>::Zero(n))));
   const robots::term_scale terms = robots::term_scales(m, x.q);
   const double m_max = std::max(max_abs(mass), terms.inertia), v = max_abs(x.qdot), a = max_abs(x.qddot);
   out.scale_m = m_max;

@@ -2,7 +2,9 @@
 /// The equations of motion under audit: what a dynamics library computes for a robot --
 /// the mass matrix M(q), the bias forces h(q, qdot), inverse dynamics tau(q, qdot, qddot)
 /// and forward dynamics qddot(q, qdot, tau) -- against the exact Lagrangian of the same
-/// robot (robots/dynamics.hpp) in mpfr50, rounded once to double.
+/// robot (robots/dynamics.hpp) in mpfr50, rounded once to double: its M and h evaluated by
+/// composite rigid bodies and Newton-Euler (robots/recursive.hpp, which the law
+/// robots.recursive_dynamics holds to the nested AD of L in every tier).
 ///
 /// The residual of a quantity is max |library - reference| / (eps * scale), eps = 2^-52,
 /// with the scale of the terms the computation sums, before they cancel (robots::term_scales:
