@@ -162,15 +162,13 @@ struct link_state {
   vector3<S> origin, omega, velocity;
 };
 
-/// Forward kinematics of every link, the root at the world's frame at rest.
+/// Forward kinematics of every link from the root's state `root` (a floating base's pose and
+/// twist, robots/floating.hpp).
 template <class S, class T>
 std::vector<link_state<S>> link_states(const robot_model<T>& m, const dynamic_vector<S>& q,
-                                       const dynamic_vector<S>& qdot) {
-  const S zero = lift<S>(0);
+                                       const dynamic_vector<S>& qdot, const link_state<S>& root) {
   std::vector<link_state<S>> out(m.description.links.size());
-  link_state<S>& root = out[std::size_t(m.tree.root)];
-  root.rotation = detail::lifted<S>(matrix3<T>(matrix3<T>::Identity()));
-  root.origin = root.omega = root.velocity = vector3<S>(zero, zero, zero);
+  out[std::size_t(m.tree.root)] = root;
   for (const int j : m.tree.order) {
     const std::size_t ju = std::size_t(j);
     const link_state<S>& p = out[std::size_t(m.tree.parent_link[ju])];
@@ -206,6 +204,56 @@ std::vector<link_state<S>> link_states(const robot_model<T>& m, const dynamic_ve
   return out;
 }
 
+/// The root at the world's frame, at rest: a fixed base.
+template <class S>
+link_state<S> fixed_root() {
+  const S zero = lift<S>(0), one = lift<S>(1);
+  link_state<S> root;
+  root.rotation << one, zero, zero, zero, one, zero, zero, zero, one;
+  root.origin = root.omega = root.velocity = vector3<S>(zero, zero, zero);
+  return root;
+}
+
+/// Forward kinematics of every link, the root at the world's frame at rest.
+template <class S, class T>
+std::vector<link_state<S>> link_states(const robot_model<T>& m, const dynamic_vector<S>& q,
+                                       const dynamic_vector<S>& qdot) {
+  return link_states(m, q, qdot, fixed_root<S>());
+}
+
+namespace detail {
+/// The links' kinetic and potential energy from their states, with the rotors' armature
+/// qdot_k^2 / 2 for the joints' rates qdot.
+template <class S, class T>
+std::pair<S, S> energies_of(const robot_model<T>& m, const std::vector<link_state<S>>& links,
+                            const dynamic_vector<S>& qdot) {
+  const vector3<S> g = lifted<S>(m.gravity);
+  S kinetic = lift<S>(0), potential = lift<S>(0);
+  for (std::size_t i = 0; i < links.size(); ++i) {
+    if (!(m.mass[i] > 0)) continue;
+    const link_state<S>& l = links[i];
+    const S mass = lift<S>(m.mass[i]);
+    const vector3<S> r = times(l.rotation, lifted<S>(m.com[i]));
+    const vector3<S> v = l.velocity + cross(l.omega, r);
+    const vector3<S> w_body = times(matrix3<S>(l.rotation.transpose()), l.omega);
+    const vector3<S> iw = times(lifted<S>(m.inertia[i]), w_body);
+    const S v2 = dot(v, v), wiw = dot(w_body, iw);
+    const S twice = mass * v2 + wiw;
+    kinetic += twice * half<S>();
+    const vector3<S> x = l.origin + r;
+    const S gx = dot(g, x);
+    potential -= mass * gx;
+  }
+  for (std::size_t k = 0; k < m.armature.size(); ++k)
+    if (m.armature[k] > 0) {
+      const S rate2 = qdot(Eigen::Index(k)) * qdot(Eigen::Index(k));
+      const S rotor = lift<S>(m.armature[k]) * rate2;
+      kinetic += rotor * half<S>();
+    }
+  return {kinetic, potential};
+}
+}  // namespace detail
+
 /// L = T - V of a robot, a Lagrangian of lagrangian/lagrangian.hpp (any scalar S).
 template <class T>
 struct robot_lagrangian {
@@ -218,31 +266,7 @@ struct robot_lagrangian {
     if (q.size() != m.dofs() || qdot.size() != m.dofs())
       throw dimension_error("robot " + m.description.name + ": " + std::to_string(m.dofs()) + " coordinates, given q of " +
                             std::to_string(q.size()) + " and qdot of " + std::to_string(qdot.size()));
-    const std::vector<link_state<S>> links = link_states(m, q, qdot);
-    const vector3<S> g = detail::lifted<S>(m.gravity);
-    S kinetic = lift<S>(0), potential = lift<S>(0);
-    for (std::size_t i = 0; i < links.size(); ++i) {
-      if (!(m.mass[i] > 0)) continue;
-      const link_state<S>& l = links[i];
-      const S mass = lift<S>(m.mass[i]);
-      const vector3<S> r = detail::times(l.rotation, detail::lifted<S>(m.com[i]));
-      const vector3<S> v = l.velocity + detail::cross(l.omega, r);
-      const vector3<S> w_body = detail::times(matrix3<S>(l.rotation.transpose()), l.omega);
-      const vector3<S> iw = detail::times(detail::lifted<S>(m.inertia[i]), w_body);
-      const S v2 = detail::dot(v, v), wiw = detail::dot(w_body, iw);
-      const S twice = mass * v2 + wiw;
-      kinetic += twice * half<S>();
-      const vector3<S> x = l.origin + r;
-      const S gx = detail::dot(g, x);
-      potential -= mass * gx;
-    }
-    for (std::size_t k = 0; k < m.armature.size(); ++k)
-      if (m.armature[k] > 0) {
-        const S rate2 = qdot(Eigen::Index(k)) * qdot(Eigen::Index(k));
-        const S rotor = lift<S>(m.armature[k]) * rate2;
-        kinetic += rotor * half<S>();
-      }
-    return {kinetic, potential};
+    return detail::energies_of(m, link_states(m, q, qdot), qdot);
   }
 
   template <class S>
@@ -372,10 +396,12 @@ struct term_scale {
   double inertia = 0, gravity = 0, mass = 0;
 };
 
+/// root_offset: the root's distance from the world's origin (a floating base at p: |p|).
 template <class T>
-term_scale term_scales(const robot_model<T>& m, const Eigen::VectorXd& q) {
+term_scale term_scales(const robot_model<T>& m, const Eigen::VectorXd& q, double root_offset = 0) {
   const std::size_t nl = m.description.links.size();
   std::vector<double> path(nl, 0.0);
+  path[std::size_t(m.tree.root)] = root_offset;
   for (const int j : m.tree.order) {
     const std::size_t ju = std::size_t(j);
     const int k = m.tree.coordinate[ju];

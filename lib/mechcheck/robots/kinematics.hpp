@@ -60,26 +60,28 @@ dynamic_vector<S> point_twist(const link_state<S>& s, const vector3<S>& p) {
 
 /// The links' total mass, and their momenta: P = sum m v_i, L_O = sum (R I R^T omega + m
 /// x_i x v_i) about the world's origin, and sum m x_i (the first moment), from the states.
-template <class T>
+template <class S>
 struct momenta {
-  T mass;
-  vector3<T> first_moment, linear, angular_about_origin;
+  S mass;
+  vector3<S> first_moment, linear, angular_about_origin;
 };
 
-template <class T>
-momenta<T> momenta_of(const robot_model<T>& m, const std::vector<link_state<T>>& links) {
-  momenta<T> out{T(0), vector3<T>::Zero(), vector3<T>::Zero(), vector3<T>::Zero()};
+template <class S, class T>
+momenta<S> momenta_of(const robot_model<T>& m, const std::vector<link_state<S>>& links) {
+  const S zero = lift<S>(0);
+  momenta<S> out{zero, vector3<S>(zero, zero, zero), vector3<S>(zero, zero, zero), vector3<S>(zero, zero, zero)};
   for (std::size_t i = 0; i < links.size(); ++i) {
     if (!(m.mass[i] > 0)) continue;
-    const link_state<T>& l = links[i];
-    const vector3<T> r = l.rotation * m.com[i];
-    const vector3<T> x = l.origin + r;
-    const vector3<T> v = l.velocity + l.omega.cross(r);
-    const vector3<T> spin = l.rotation * (m.inertia[i] * (l.rotation.transpose() * l.omega));
-    out.mass += m.mass[i];
-    out.first_moment += m.mass[i] * x;
-    out.linear += m.mass[i] * v;
-    out.angular_about_origin += spin + m.mass[i] * x.cross(v);
+    const link_state<S>& l = links[i];
+    const S mass = lift<S>(m.mass[i]);
+    const vector3<S> r = times(l.rotation, lifted<S>(m.com[i]));
+    const vector3<S> x = l.origin + r;
+    const vector3<S> v = l.velocity + cross(l.omega, r);
+    const vector3<S> spin = times(l.rotation, times(lifted<S>(m.inertia[i]), times(matrix3<S>(l.rotation.transpose()), l.omega)));
+    out.mass += mass;
+    out.first_moment += x * mass;
+    out.linear += v * mass;
+    out.angular_about_origin += spin + cross(x, v) * mass;
   }
   return out;
 }
