@@ -130,6 +130,120 @@ TEST(robots, the_recursive_algorithms_agree_with_the_lagrangian_on_random_trees_
   EXPECT_EQ(failure, "");
 }
 
+/// A free rigid body (a floating base and no joints) with its centre of mass at c and its
+/// inertia I about it, both in its own frame: in its body twist u = (v; w), Newton and Euler
+/// about its origin give f = m (vdot + w x v + wdot x c + w x (w x c) - R^T g) and n = I wdot +
+/// w x I w + c x f, and M = [m 1, -m [c]x; m [c]x, I + m (|c|^2 1 - c c^T)].
+template <class T>
+void expect_free_body_closed_form() {
+  rb::robot r;
+  r.name = "free_body";
+  rb::inertial b;
+  b.mass = 3;
+  b.origin.xyz = {0.25, -0.125, 0.5};
+  b.inertia << 0.5, 0.0625, -0.03125, 0.0625, 0.375, 0.125, -0.03125, 0.125, 0.75;
+  r.links.push_back({"body", b});
+  r.gravity = {0.5, -1, -9.75};
+  const rb::robot_model<T> m(r);
+  rb::pose at;
+  at.xyz = {0.75, -0.5, 1.25};
+  at.rpy = {0.5, -1.25, 2};
+  const rb::base_pose<T> base = rb::base_pose_from<T>(at);
+  dynamic_vector<T> u(6), udot(6);
+  u << T(0.5), T(-1), T(1.5), T(2), T(-0.75), T(1.25);
+  udot << T(-1), T(0.25), T(3), T(0.5), T(-2), T(1);
+  const vector3<T> v = u.head(3), w = u.tail(3), vd = udot.head(3), wd = udot.tail(3);
+  const vector3<T> c = b.origin.xyz.cast<T>();
+  const matrix3<T> inertia = b.inertia.cast<T>();
+  const vector3<T> g_body = base.rotation.transpose() * r.gravity.cast<T>();
+  const vector3<T> f = (vd + w.cross(v) + wd.cross(c) + w.cross(w.cross(c)) - g_body) * T(b.mass);
+  const vector3<T> n = inertia * wd + w.cross(vector3<T>(inertia * w)) + c.cross(f);
+  dynamic_vector<T> want(6);
+  want << f, n;
+  dynamic_matrix<T> mass = dynamic_matrix<T>::Zero(6, 6);
+  matrix3<T> lever;
+  lever << T(0), -c(2), c(1), c(2), T(0), -c(0), -c(1), c(0), T(0);
+  mass.block(0, 0, 3, 3) = matrix3<T>::Identity() * T(b.mass);
+  mass.block(0, 3, 3, 3) = -lever * T(b.mass);
+  mass.block(3, 0, 3, 3) = lever * T(b.mass);
+  mass.block(3, 3, 3, 3) = inertia + (matrix3<T>::Identity() * c.squaredNorm() - c * c.transpose()) * T(b.mass);
+  const dynamic_vector<T> none(0);
+  const rb::motion_terms<T> e = rb::floating_motion_terms_at(m, base, none, u);
+  // Each side a few dozen roundings of terms up to |m g| and m |w|^2 |c| (about 30): 64 eps of
+  // 64 (f, n) and of |M|.
+  const T eps = std::numeric_limits<T>::epsilon(), forces = T(64), inertias = mass.cwiseAbs().maxCoeff();
+  const auto expect_near = [&](const dynamic_vector<T>& got, const char* what) {
+    for (int i = 0; i < 6; ++i) EXPECT_LE(T(abs(T(got(i) - want(i)))), 64 * eps * forces) << what << " " << i;
+  };
+  expect_near(rb::floating_recursive_inverse_dynamics(m, base, none, u, udot), "Newton-Euler");
+  expect_near(dynamic_vector<T>(e.mass_matrix * udot + e.bias), "the chart's Euler-Lagrange");
+  for (const auto& [got, what] : {std::pair{rb::floating_recursive_mass_matrix(m, base, none), "composite M"},
+                                  std::pair{e.mass_matrix, "the Lagrangian's M"},
+                                  std::pair{rb::base_spatial_inertia(m, base, none), "the spatial inertia"}})
+    EXPECT_LE(T((got - mass).cwiseAbs().maxCoeff()), 64 * eps * inertias) << what;
+}
+
+TEST(robots, a_free_rigid_body_on_a_floating_base_obeys_newton_and_euler_in_its_own_frame) {
+  expect_free_body_closed_form<double>();
+  expect_free_body_closed_form<mpfr50>();
+}
+
+/// The two-link arm on a floating base held still (zero twist and zero twist rate) at any pose,
+/// gravity turned with the base: its joints' forces are the bolted arm's closed form; the
+/// base's force is the weight the hand holding it carries, R^T sum m (a_c - g).
+TEST(robots, the_two_link_arm_on_a_base_held_still_has_the_bolted_arms_forces) {
+  const double m1 = 2, m2 = 1.5, l1 = 1, c1 = 0.5, c2 = 0.375, i1 = 0.25, i2 = 0.0625, g = 9.81;
+  rb::robot r = two_link_arm(m1, m2, l1, c1, c2, i1, i2);
+  rb::inertial torso;
+  torso.mass = 5;
+  torso.inertia = Eigen::Vector3d(0.5, 0.5, 0.25).asDiagonal();
+  r.links[0].body = torso;
+  rb::pose at;
+  at.xyz = {0.25, 0.5, 1};
+  at.rpy = {0.5, -0.25, 1.5};
+  const rb::base_pose<double> base = rb::base_pose_from<double>(at);
+  r.gravity = base.rotation * Eigen::Vector3d(0, 0, -g);
+  const rb::robot_model<double> m(r);
+  const Eigen::Vector2d q(0.3, -0.7), qdot(1.1, 0.4), qddot(-0.5, 2.0);
+  const arm_closed_form want = arm_terms(m1, m2, l1, c1, c2, i1, i2, g, q, qdot);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(8), udot = Eigen::VectorXd::Zero(8);
+  u.tail(2) = qdot;
+  udot.tail(2) = qddot;
+  const Eigen::VectorXd got = rb::floating_recursive_inverse_dynamics(m, base, Eigen::VectorXd(q), u, udot);
+  constexpr double eps = 0x1p-52;
+  const double scale = (m1 + m2) * g * 2 + 2 * want.m.cwiseAbs().maxCoeff() * 2;
+  EXPECT_LE((got.tail(2) - (want.m * qddot + want.h)).cwiseAbs().maxCoeff(), 64 * eps * scale);
+  // At rest with qddot = 0 the base carries the whole weight: f_b = -R^T g sum m.
+  Eigen::VectorXd rest = Eigen::VectorXd::Zero(8);
+  const Eigen::VectorXd held = rb::floating_recursive_inverse_dynamics(m, base, Eigen::VectorXd(q), rest, rest);
+  EXPECT_LE((held.head(3) - Eigen::Vector3d(0, 0, g * (m1 + m2 + 5))).cwiseAbs().maxCoeff(), 64 * eps * scale);
+}
+
+TEST(robots, a_floating_base_refuses_a_state_of_the_wrong_size_and_a_joint_with_nothing_on_its_base_side) {
+  rb::robot r = two_link_arm(2, 1.5, 1, 0.5, 0.375, 0.25, 0.0625);
+  const rb::base_pose<double> base = rb::base_pose_from<double>(rb::pose{});
+  const Eigen::VectorXd q = Eigen::Vector2d(0.3, -0.7), u = Eigen::VectorXd::Zero(8), short_u = Eigen::VectorXd::Zero(7);
+  // The arm's base has no body: the shoulder's rate turns the same links as the base's.
+  const rb::robot_model<double> bare(r);
+  try {
+    rb::floating_recursive_mass_matrix(bare, base, q);
+    ADD_FAILURE() << "a shoulder with a massless base was taken";
+  } catch (const rb::robot_error& e) {
+    EXPECT_NE(std::string(e.what()).find("joint shoulder has no mass on the base's side"), std::string::npos) << e.what();
+  }
+  r.joints[0].armature = 0.125;  // a rotor gives the shoulder inertia of its own
+  const rb::robot_model<double> m(r);
+  EXPECT_NO_THROW(rb::floating_recursive_mass_matrix(m, base, q));
+  EXPECT_THROW(rb::floating_recursive_bias(m, base, q, short_u), dimension_error);
+  EXPECT_THROW(rb::floating_motion_terms_at(m, base, Eigen::VectorXd(Eigen::Vector3d::Zero()), u), dimension_error);
+  Eigen::VectorXd nan = u;
+  nan(3) = std::nan("");
+  EXPECT_THROW(rb::floating_forward_dynamics(m, base, q, u, nan), non_finite_error);
+  rb::pose bad;
+  bad.rpy(1) = INFINITY;
+  EXPECT_THROW(rb::base_pose_from<double>(bad), non_finite_error);
+}
+
 TEST(robots, the_kinematics_give_the_two_link_arms_closed_form) {
   // The arm turns about y and hangs along -z: R_y(a) takes (0, 0, -d) to (-d sin a, 0, -d cos a).
   // A point p = (0, 0, -d) of the forearm is at x = -(l1 s1 + d s12, 0, l1 c1 + d c12), with

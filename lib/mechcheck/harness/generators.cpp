@@ -308,6 +308,26 @@ rc::Gen<double> power_of_two(int lo, int hi) {
   });
 }
 Eigen::Vector3d draw_triple(const rc::Gen<double>& g) { return {*g, *g, *g}; }
+
+/// A link's mass, centre of mass and inertia (random_robots' header), drawn inside the
+/// caller's rc::gen::exec: the same draws, in the same order, as when they were written out
+/// in random_robots, so that a seed gives the robots it gave before.
+robots::inertial draw_inertial() {
+  robots::inertial b;
+  b.mass = *power_of_two(-6, 7) * *dyadic(1, 2);
+  b.origin.xyz = draw_triple(dyadic_towards_zero(0.5));
+  b.origin.rpy = draw_triple(dyadic_towards_zero(3.14));
+  // Principal moments s (x, 1, z): x down to 2^-10, z anywhere between |x - 1| and
+  // x + 1 (u = 0 and 1 are the triangle's bounds), all turned by a further rpy.
+  const double s = *power_of_two(-5, 5), x = std::ldexp(1.0, -*int_with_ends(0, 10));
+  const double u = 0.5 + *dyadic_towards_zero(0.5);
+  const double z = std::abs(x - 1) + u * (x + 1 - std::abs(x - 1));
+  const Eigen::Vector3d turn = draw_triple(dyadic_towards_zero(3.14));
+  const Eigen::Matrix3d rot = robots::rpy_rotation<double>(turn);
+  const Eigen::Matrix3d full = rot * Eigen::Vector3d(s * x, s, s * z).asDiagonal() * rot.transpose();
+  b.inertia = (full + full.transpose()) / 2;
+  return b;
+}
 }  // namespace
 
 rc::Gen<robots::robot> random_robots(int max_links) {
@@ -336,25 +356,22 @@ rc::Gen<robots::robot> random_robots(int max_links) {
       }
       j.origin.xyz = draw_triple(dyadic_towards_zero(1));
       j.origin.rpy = draw_triple(dyadic_towards_zero(3.14));
-      robots::inertial b;
-      b.mass = *power_of_two(-6, 7) * *dyadic(1, 2);
-      b.origin.xyz = draw_triple(dyadic_towards_zero(0.5));
-      b.origin.rpy = draw_triple(dyadic_towards_zero(3.14));
-      // Principal moments s (x, 1, z): x down to 2^-10, z anywhere between |x - 1| and
-      // x + 1 (u = 0 and 1 are the triangle's bounds), all turned by a further rpy.
-      const double s = *power_of_two(-5, 5), x = std::ldexp(1.0, -*int_with_ends(0, 10));
-      const double u = 0.5 + *dyadic_towards_zero(0.5);
-      const double z = std::abs(x - 1) + u * (x + 1 - std::abs(x - 1));
-      const Eigen::Vector3d turn = draw_triple(dyadic_towards_zero(3.14));
-      const Eigen::Matrix3d rot = robots::rpy_rotation<double>(turn);
-      const Eigen::Matrix3d full = rot * Eigen::Vector3d(s * x, s, s * z).asDiagonal() * rot.transpose();
-      b.inertia = (full + full.transpose()) / 2;
+      const robots::inertial b = draw_inertial();
       r.links.push_back({j.child, b});
       r.joints.push_back(j);
     }
     return r;
   });
 }
+
+namespace {
+/// ", name = (v0, v1, ...)"
+void show_numbers(std::ostream& os, const char* name, const std::vector<double>& v) {
+  os << ", " << name << " = (";
+  for (std::size_t i = 0; i < v.size(); ++i) os << (i ? ", " : "") << v[i];
+  os << ")";
+}
+}  // namespace
 
 void showValue(const robot_case& c, std::ostream& os) {
   const robots::robot& r = c.robot;
@@ -363,15 +380,10 @@ void showValue(const robot_case& c, std::ostream& os) {
     os << " " << j.name << " " << robots::joint_type_name(j.type) << " " << j.parent << "->" << j.child << " axis ("
        << j.axis.transpose() << ")" << (j.armature != 0 ? " armature " + to_text(j.armature) : std::string())
        << (j.damping != 0 ? " damping " + to_text(j.damping) : std::string());
-  const auto vec = [&](const char* name, const std::vector<double>& v) {
-    os << ", " << name << " = (";
-    for (std::size_t i = 0; i < v.size(); ++i) os << (i ? ", " : "") << v[i];
-    os << ")";
-  };
-  vec("q", c.q);
-  vec("qdot", c.qdot);
-  vec("qddot", c.qddot);
-  vec("tau", c.tau);
+  show_numbers(os, "q", c.q);
+  show_numbers(os, "qdot", c.qdot);
+  show_numbers(os, "qddot", c.qddot);
+  show_numbers(os, "tau", c.tau);
 }
 
 rc::Gen<robot_case> robot_cases(int max_links) {
@@ -393,6 +405,32 @@ rc::Gen<robot_case> robot_cases(int max_links) {
       c.qddot.push_back(*rate);
       c.tau.push_back(*rate);
     }
+    return c;
+  });
+}
+
+void showValue(const floating_robot_case& c, std::ostream& os) {
+  os << "on a floating base";
+  if (const auto& b = c.joints.robot.links.front().body)
+    os << " of mass " << b->mass << " (centre (" << b->origin.xyz.transpose() << "), rpy (" << b->origin.rpy.transpose()
+       << "), inertia (" << b->inertia.row(0) << "; " << b->inertia.row(1) << "; " << b->inertia.row(2) << "))";
+  os << " at xyz (" << c.base.xyz.transpose() << ") rpy (" << c.base.rpy.transpose() << ")";
+  show_numbers(os, "twist", c.twist);
+  show_numbers(os, "twist rate", c.twist_rate);
+  show_numbers(os, "wrench", c.wrench);
+  os << "; ";
+  showValue(c.joints, os);
+}
+
+rc::Gen<floating_robot_case> floating_robot_cases(rc::Gen<robot_case> joints) {
+  return rc::gen::exec([joints] {
+    floating_robot_case c;
+    c.joints = *joints;
+    c.joints.robot.links.front().body = draw_inertial();
+    c.base.xyz = draw_triple(dyadic_towards_zero(1));
+    c.base.rpy = draw_triple(dyadic_towards_zero(3.14));
+    for (auto* v : {&c.twist, &c.twist_rate, &c.wrench})
+      for (int i = 0; i < 6; ++i) v->push_back(*dyadic_towards_zero(4));
     return c;
   });
 }

@@ -326,6 +326,19 @@ void showValue(const robot_case& c, std::ostream& os);
 
 rc::Gen<robot_case> robot_cases(int max_links = 8);
 
+/// A robot of `joints` on a floating base (robots/floating.hpp): the root link (a torso) given a
+/// body of its own; the base's pose (xyz in [-1, 1], rpy in [-3.14, 3.14]), its twist
+/// (v_b; w_b), the twist's rate and a wrench (f_b; n_b) on it, each component in [-4, 4].
+struct floating_robot_case {
+  robot_case joints;
+  robots::pose base;
+  std::vector<double> twist, twist_rate, wrench;
+};
+
+void showValue(const floating_robot_case& c, std::ostream& os);
+
+rc::Gen<floating_robot_case> floating_robot_cases(rc::Gen<robot_case> joints);
+
 /// A case of bodies in contact (reference/contact.hpp; the engines' contact scenarios): every
 /// number dyadic, so that a case is exact in every tier and in an engine's input file.
 ///   theta, psi: the velocity's direction and the body's yaw about z, in [-3.15, 3.15] rad;

@@ -1,0 +1,162 @@
+#include "mechcheck/robots/floating.hpp"
+#include "robots/robots.hpp"
+
+namespace {
+using namespace mechcheck::laws::robots;
+
+/// A random robot of at most 3 links on a floating base (6 + 3 coordinates keep the mpfr50
+/// tier's nested AD within a second a case), with armature and damping, in T.
+template <class T>
+struct floating_sample {
+  gen::floating_robot_case c;
+  rb::robot_model<T> model;
+  rb::base_pose<T> base;
+  dynamic_vector<T> q, u, udot, force;
+  int links;
+  explicit floating_sample(gen::floating_robot_case fc)
+      : c(std::move(fc)), model(c.joints.robot), base(rb::base_pose_from<T>(c.base)), q(gen::to_tier<T>(c.joints.q)),
+        u(model.dofs() + 6), udot(model.dofs() + 6), force(model.dofs() + 6), links(model.dofs() + 1) {
+    u << gen::to_tier<T>(c.twist), gen::to_tier<T>(c.joints.qdot);
+    udot << gen::to_tier<T>(c.twist_rate), gen::to_tier<T>(c.joints.qddot);
+    force << gen::to_tier<T>(c.wrench), gen::to_tier<T>(c.joints.tau);
+    RC_TAG(std::to_string(model.dofs()) + (model.dofs() == 1 ? " joint" : " joints") + " on a floating base");
+  }
+};
+
+rc::Gen<gen::floating_robot_case> floating_cases() { return gen::floating_robot_cases(dressed_robot_cases(3)); }
+
+/// The size of the terms the floating equations of motion sum: term_scales from the base's
+/// distance to the world's origin (the recursive side works about that origin), the largest
+/// component of u and of udot.
+template <class T>
+struct floating_scales {
+  T inertia, momentum, forces, generalized_force;
+  explicit floating_scales(const floating_sample<T>& s, const dynamic_matrix<T>& mass) {
+    using std::abs;
+    const rb::robot_model<T>& m = s.model;
+    T vmax = T(0), amax = T(0), rotor = T(0), damping = T(0);
+    for (Eigen::Index i = 0; i < s.u.size(); ++i) {
+      vmax = std::max<T>(vmax, T(abs(s.u(i))));
+      amax = std::max<T>(amax, T(abs(s.udot(i))));
+    }
+    for (std::size_t k = 0; k < m.armature.size(); ++k) {
+      rotor = std::max<T>(rotor, m.armature[k]);
+      damping = std::max<T>(damping, m.damping[k]);
+    }
+    const rb::term_scale ts = rb::term_scales(m, gen::to_tier<double>(s.c.joints.q), s.c.base.xyz.norm());
+    inertia = std::max<T>(max_abs(mass), T(ts.inertia + ts.mass) + rotor);
+    momentum = inertia * T(double(s.u.size())) * vmax;
+    forces = T(ts.gravity) + inertia * vmax * vmax + damping * vmax;
+    generalized_force = forces + inertia * T(double(s.u.size())) * amax;
+  }
+};
+
+struct floating_base_dynamics {
+  static law_info info() {
+    return {"robots.floating_base_dynamics",
+            "On a floating base, in the base's body twist u = (v_b; w_b; qdot): Newton-Euler's Q = M udot + h "
+            "and the composite rigid bodies' M equal the Euler-Lagrange equations' in a chart of SE(3) about "
+            "the pose (where udot is the chart's acceleration), and M's base block is the robot's spatial "
+            "inertia about the base's origin by the parallel-axis theorem (eq 160), armature and damping "
+            "included",
+            {"1", "160"}};
+  }
+  // As robots.recursive_dynamics (k = 128 n on the terms, n the links with the base), the
+  // levers measured from the world's origin, which the base is up to sqrt 3 from; the base's
+  // linear rows carry sum m where the angular ones carry sum m r^2 (ts.mass added).
+  template <class T>
+  static void property() {
+    const floating_sample<T> s(*floating_cases());
+    const rb::robot_model<T>& m = s.model;
+    const rb::motion_terms<T> e = rb::floating_motion_terms_at(m, s.base, s.q, s.u);
+    const dynamic_matrix<T> mass = rb::floating_recursive_mass_matrix(m, s.base, s.q);
+    const dynamic_vector<T> bias = rb::floating_recursive_bias(m, s.base, s.q, s.u);
+    const dynamic_vector<T> q_force = rb::floating_recursive_inverse_dynamics(m, s.base, s.q, s.u, s.udot);
+    const dynamic_matrix<T> spatial = rb::base_spatial_inertia(m, s.base, s.q);
+    const floating_scales<T> sc(s, e.mass_matrix);
+    const double k = 128.0 * s.links;
+    const Eigen::Index n = s.u.size();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const std::string at = "(" + std::to_string(i);
+      for (Eigen::Index j = 0; j < n; ++j) {
+        const std::string ij = at + "," + std::to_string(j) + ")";
+        check_close("composite rigid bodies' M" + ij + " = d2T/du2", mass(i, j), e.mass_matrix(i, j), sc.inertia, k);
+        if (i < 6 && j < 6)
+          check_close("the spatial inertia" + ij + " = M's base block", spatial(i, j), e.mass_matrix(i, j), sc.inertia, k);
+      }
+      check_close("Newton-Euler's h" + at + ") = the Euler-Lagrange bias", bias(i), e.bias(i), sc.forces, k);
+    }
+    const dynamic_vector<T> lagrange = e.mass_matrix * s.udot + e.bias;
+    for (Eigen::Index i = 0; i < n; ++i)
+      check_close("Newton-Euler's Q(" + std::to_string(i) + ") = M udot + h", q_force(i), lagrange(i),
+                  sc.generalized_force, k + 2.0 * double(n));
+  }
+};
+MECHCHECK_LAW(floating_base_dynamics);
+
+struct floating_momentum {
+  static law_info info() {
+    return {"robots.floating_momentum",
+            "A robot on a floating base, moved by its joints' torques and damping (internal forces), a wrench "
+            "on its base and gravity: the rate of its total momentum P is the external force, m g + R f_b, and "
+            "of its angular momentum about the world's origin the external moment, c x m g + p x R f_b + "
+            "R n_b, and M u's base rows are that momentum in the base's frame (about its origin); in zero gravity with no wrench both are conserved, and the centre of mass, P / m, moves "
+            "uniformly (Noether, eqs 73-76 and 79-81)",
+            {"75", "76", "79", "81", "83"}};
+  }
+  // The rates are the base rows of M udot + h - Q turned into the world (R, and the moment
+  // moved from the base's origin p to the world's: |p| <= sqrt 3) at udot = M^-1 (Q - h):
+  // a Cholesky solve's backward error, within k n eps of |M| |udot| (no cond(M)), beside the
+  // terms of h and Q; the rate's own kinematics (forward AD along the chart) within the
+  // same k = 128 n on those terms.
+  template <class T>
+  static void property() {
+    floating_sample<T> s(*floating_cases());
+    using std::abs;
+    const bool free = *rc::gen::arbitrary<bool>();
+    if (free) {
+      s.model.gravity = vector3<T>::Zero();
+      s.force.head(6).setZero();
+      RC_TAG("zero gravity, no wrench");
+    }
+    const rb::robot_model<T>& m = s.model;
+    const dynamic_vector<T> udot = rb::floating_forward_dynamics(m, s.base, s.q, s.u, s.force);
+    const dynamic_vector<T> rate = rb::floating_momentum_rate(m, s.base, s.q, s.u, udot);
+    // The external wrench: gravity on each link's mass at its centre, and the base's.
+    const dynamic_vector<T> rest = dynamic_vector<T>::Zero(s.u.size());
+    const auto centre = rb::detail::momenta_of(m, rb::link_states(m, s.q, dynamic_vector<T>(rest.tail(m.dofs())),
+                                                                  rb::detail::floating_root(s.base, rest)));
+    const vector3<T> f = s.base.rotation * rb::detail::segment3(s.force, 0);
+    const vector3<T> n_b = s.base.rotation * rb::detail::segment3(s.force, 3);
+    const vector3<T> weight = m.gravity * centre.mass;
+    const vector3<T> force = weight + f;
+    const vector3<T> moment = centre.first_moment.cross(m.gravity) + s.base.position.cross(f) + n_b;
+    // |udot| and the scales of M and h at it.
+    floating_sample<T> at_udot = s;
+    at_udot.udot = udot;
+    const dynamic_matrix<T> mass = rb::floating_recursive_mass_matrix(m, s.base, s.q);
+    const floating_scales<T> sc(at_udot, mass);
+    // The base rows of M u (dT/du, the power of a base force on u) are the momentum in the
+    // base's frame: R^T P and R^T L about the base's origin, L_O - p x P (eqs 82-83).
+    const dynamic_vector<T> world = rb::floating_momentum(m, s.base, s.q, s.u);
+    const vector3<T> p_world = rb::detail::segment3(world, 0), l_world = rb::detail::segment3(world, 3);
+    const matrix3<T> rt = s.base.rotation.transpose();
+    const vector3<T> p_base = rt * p_world, l_base = rt * vector3<T>(l_world - s.base.position.cross(p_world));
+    const dynamic_vector<T> generalized_momentum = mass * s.u;
+    T wrench = T(0);
+    for (Eigen::Index i = 0; i < s.force.size(); ++i) wrench = std::max<T>(wrench, T(abs(s.force(i))));
+    const T scale = sc.generalized_force + wrench * T(3);
+    const double k = 128.0 * s.links;
+    for (int i = 0; i < 3; ++i) {
+      const std::string axis(1, "xyz"[i]);
+      check_close("dP" + axis + "/dt = the external force", rate(i), force(i), scale, k);
+      check_close("dL" + axis + "/dt = the external moment about the origin", rate(3 + i), moment(i), scale, k);
+      check_close("(M u)'s linear row " + axis + " = R^T P", generalized_momentum(i), p_base(i), sc.momentum, k);
+      check_close("(M u)'s angular row " + axis + " = R^T L about the base", generalized_momentum(3 + i), l_base(i),
+                  sc.momentum, k);
+    }
+  }
+};
+MECHCHECK_LAW(floating_momentum);
+
+}  // namespace
