@@ -4,8 +4,9 @@
 namespace {
 using namespace mechcheck::laws::robots;
 
-/// A random robot of at most 3 links on a floating base (6 + 3 coordinates keep the mpfr50
-/// tier's nested AD within a second a case), with armature and damping, in T.
+/// A random robot of at most 3 moving links on a floating base (6 + 3 coordinates: the mpfr50
+/// tier's nested AD of L takes 0.1 s a case, 0.3 s with three links), with armature and
+/// damping, in T.
 template <class T>
 struct floating_sample {
   gen::floating_robot_case c;

@@ -254,19 +254,84 @@ std::pair<S, S> energies_of(const robot_model<T>& m, const std::vector<link_stat
 }
 }  // namespace detail
 
-/// L = T - V of a robot, a Lagrangian of lagrangian/lagrangian.hpp (any scalar S).
+/// A floating base's pose (robots/floating.hpp): the root link's frame in the world (rotation
+/// root to world, and its origin).
+template <class T>
+struct base_pose {
+  matrix3<T> rotation;
+  vector3<T> position;
+};
+
+/// The pose (xyz, rpy) as URDF writes one, in T (non_finite_error for a number that is not
+/// finite).
+template <class T>
+base_pose<T> base_pose_from(const pose& p) {
+  detail::require_finite_pose(p, "base_pose_from");
+  return {rpy_rotation<T>(p.rpy), p.xyz.cast<T>()};
+}
+
+namespace detail {
+template <class S>
+matrix3<S> skew(const vector3<S>& a) {
+  const S zero = lift<S>(0);
+  matrix3<S> out;
+  out << zero, S(-a(2)), a(1), a(2), zero, S(-a(0)), S(-a(1)), a(0), zero;
+  return out;
+}
+
+/// The root's state at chart coordinates (x, phi) and their rates about the pose b:
+/// R = R_b cay(phi), p = p_b + R_b (x + phi x x / 2) (robots/floating.hpp's header).
+template <class S, class T>
+link_state<S> charted_root(const base_pose<T>& b, const vector3<S>& x, const vector3<S>& phi, const vector3<S>& xdot,
+                           const vector3<S>& phidot) {
+  const S one = lift<S>(1), four = lift<S>(4);
+  const S phi2 = dot(phi, phi);
+  const S scale = four / S(four + phi2);
+  const matrix3<S> k = skew(phi);
+  matrix3<S> cay = matrix3<S>(k + matrix3<S>(times(k, k) * half<S>())) * scale;
+  for (int i = 0; i < 3; ++i) cay(i, i) += one;
+  const matrix3<S> r0 = lifted<S>(b.rotation);
+  link_state<S> out;
+  out.rotation = times(r0, cay);
+  const vector3<S> arm = x + cross(phi, x) * half<S>();
+  out.origin = lifted<S>(b.position) + times(r0, arm);
+  // cay's body angular velocity: 4 / (4 + |phi|^2) (phidot - phi x phidot / 2).
+  const vector3<S> w_body = vector3<S>(phidot - cross(phi, phidot) * half<S>()) * scale;
+  out.omega = times(out.rotation, w_body);
+  const vector3<S> turn = vector3<S>(cross(phidot, x) + cross(phi, xdot)) * half<S>();  // d/dt (phi x x / 2)
+  out.velocity = times(r0, vector3<S>(xdot + turn));
+  return out;
+}
+
+template <class S>
+vector3<S> segment3(const dynamic_vector<S>& v, Eigen::Index at) {
+  return vector3<S>(v(at), v(at + 1), v(at + 2));
+}
+}  // namespace detail
+
+/// L = T - V of a robot, a Lagrangian of lagrangian/lagrangian.hpp (any scalar S). On a
+/// floating base (`base` given: robots/floating.hpp) its coordinates are the chart's s = (x,
+/// phi, q) about the base's pose; one type for both, so that the nested AD that differentiates
+/// it is compiled once.
 template <class T>
 struct robot_lagrangian {
   const robot_model<T>* model;
+  const base_pose<T>* base = nullptr;
 
   /// Kinetic and potential energy at (q, qdot).
   template <class S>
   std::pair<S, S> energies(const dynamic_vector<S>& q, const dynamic_vector<S>& qdot) const {
     const robot_model<T>& m = *model;
-    if (q.size() != m.dofs() || qdot.size() != m.dofs())
-      throw dimension_error("robot " + m.description.name + ": " + std::to_string(m.dofs()) + " coordinates, given q of " +
-                            std::to_string(q.size()) + " and qdot of " + std::to_string(qdot.size()));
-    return detail::energies_of(m, link_states(m, q, qdot), qdot);
+    const Eigen::Index n = m.dofs(), b = base ? 6 : 0;
+    if (q.size() != n + b || qdot.size() != n + b)
+      throw dimension_error("robot " + m.description.name + (base ? " on a floating base: 6 + " : ": ") +
+                            std::to_string(n) + " coordinates, given q of " + std::to_string(q.size()) +
+                            " and qdot of " + std::to_string(qdot.size()));
+    if (!base) return detail::energies_of(m, link_states(m, q, qdot), qdot);
+    const link_state<S> root = detail::charted_root(*base, detail::segment3(q, 0), detail::segment3(q, 3),
+                                                    detail::segment3(qdot, 0), detail::segment3(qdot, 3));
+    const dynamic_vector<S> joints = q.tail(n), rates = qdot.tail(n);
+    return detail::energies_of(m, link_states(m, joints, rates, root), rates);
   }
 
   template <class S>

@@ -39,60 +39,7 @@
 
 namespace mechcheck::robots {
 
-/// A floating base's pose: the root link's frame in the world (rotation root to world, and
-/// its origin).
-template <class T>
-struct base_pose {
-  matrix3<T> rotation;
-  vector3<T> position;
-};
-
-/// The pose (xyz, rpy) as URDF writes one, in T (non_finite_error for a number that is not
-/// finite).
-template <class T>
-base_pose<T> base_pose_from(const pose& p) {
-  detail::require_finite_pose(p, "base_pose_from");
-  return {rpy_rotation<T>(p.rpy), p.xyz.cast<T>()};
-}
-
 namespace detail {
-template <class S>
-matrix3<S> skew(const vector3<S>& a) {
-  const S zero = lift<S>(0);
-  matrix3<S> out;
-  out << zero, S(-a(2)), a(1), a(2), zero, S(-a(0)), S(-a(1)), a(0), zero;
-  return out;
-}
-
-/// The root's state at chart coordinates (x, phi) and their rates about the pose b (the
-/// file's header).
-template <class S, class T>
-link_state<S> charted_root(const base_pose<T>& b, const vector3<S>& x, const vector3<S>& phi, const vector3<S>& xdot,
-                           const vector3<S>& phidot) {
-  const S one = lift<S>(1), four = lift<S>(4);
-  const S phi2 = dot(phi, phi);
-  const S scale = four / S(four + phi2);
-  const matrix3<S> k = skew(phi);
-  matrix3<S> cay = matrix3<S>(k + matrix3<S>(times(k, k) * half<S>())) * scale;
-  for (int i = 0; i < 3; ++i) cay(i, i) += one;
-  const matrix3<S> r0 = lifted<S>(b.rotation);
-  link_state<S> out;
-  out.rotation = times(r0, cay);
-  const vector3<S> arm = x + cross(phi, x) * half<S>();
-  out.origin = lifted<S>(b.position) + times(r0, arm);
-  // cay's body angular velocity: 4 / (4 + |phi|^2) (phidot - phi x phidot / 2).
-  const vector3<S> w_body = vector3<S>(phidot - cross(phi, phidot) * half<S>()) * scale;
-  out.omega = times(out.rotation, w_body);
-  const vector3<S> turn = vector3<S>(cross(phidot, x) + cross(phi, xdot)) * half<S>();  // d/dt (phi x x / 2)
-  out.velocity = times(r0, vector3<S>(xdot + turn));
-  return out;
-}
-
-template <class S>
-vector3<S> segment3(const dynamic_vector<S>& v, Eigen::Index at) {
-  return vector3<S>(v(at), v(at + 1), v(at + 2));
-}
-
 /// q of the robot's joints, and each of the others (u, udot, Q) of 6 + its joints; finite.
 template <class T>
 void check_floating_state(const robot_model<T>& m, const dynamic_vector<T>& q,
@@ -134,34 +81,6 @@ link_state<T> floating_root(const base_pose<T>& b, const dynamic_vector<T>& u) {
 }
 }  // namespace detail
 
-/// L = T - V of a floating robot in the chart coordinates s = (x, phi, q) about the pose
-/// `base`, a Lagrangian of lagrangian/lagrangian.hpp (any scalar S).
-template <class T>
-struct floating_lagrangian {
-  const robot_model<T>* model;
-  base_pose<T> base;
-
-  template <class S>
-  std::pair<S, S> energies(const dynamic_vector<S>& s, const dynamic_vector<S>& sdot) const {
-    const robot_model<T>& m = *model;
-    const Eigen::Index n = m.dofs();
-    if (s.size() != n + 6 || sdot.size() != n + 6)
-      throw dimension_error("robot " + m.description.name + " on a floating base: 6 + " + std::to_string(n) +
-                            " coordinates, given s of " + std::to_string(s.size()) + " and sdot of " +
-                            std::to_string(sdot.size()));
-    const link_state<S> root = detail::charted_root(base, detail::segment3(s, 0), detail::segment3(s, 3),
-                                                    detail::segment3(sdot, 0), detail::segment3(sdot, 3));
-    const dynamic_vector<S> q = s.tail(n), qdot = sdot.tail(n);
-    return detail::energies_of(m, link_states(m, q, qdot, root), qdot);
-  }
-
-  template <class S>
-  S operator()(const dynamic_vector<S>& s, const dynamic_vector<S>& sdot, const S&) const {
-    const auto [kinetic, potential] = energies(s, sdot);
-    return S(kinetic - potential);
-  }
-};
-
 /// M(b, q) and h(b, q, u) in u = (v_b; w_b; qdot), from one nested-AD evaluation of the
 /// chart's L at s = 0 (the file's header); the joints' damping added to h.
 template <class T>
@@ -169,7 +88,7 @@ motion_terms<T> floating_motion_terms_at(const robot_model<T>& m, const base_pos
                                          const dynamic_vector<T>& u) {
   detail::check_floating_state(m, q, {{"u", &u}}, "floating_motion_terms_at");
   const Eigen::Index n = m.dofs();
-  const floating_lagrangian<T> lag{&m, b};
+  const robot_lagrangian<T> lag{&m, &b};
   dynamic_vector<T> s = dynamic_vector<T>::Zero(n + 6);
   s.tail(n) = q;
   const auto j = lagrangian_jet_at(lag, s, u, T(0), "robot " + m.description.name + " on a floating base");
