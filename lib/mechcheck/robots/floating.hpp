@@ -164,7 +164,8 @@ dynamic_vector<T> floating_forward_dynamics(const robot_model<T>& m, const base_
 /// (notes eq 160): m the total mass, c its centre in the base frame, I_O = sum R_i' I_i R_i'^T +
 /// m_i (|c_i|^2 1 - c_i c_i^T) with R_i' the link's rotation in the base frame. The kinetic
 /// energy of the robot moving rigidly with the base twist (v_b; w_b) is half its quadratic
-/// form: M's base block.
+/// form: M's base block. In the base's frame it does not depend on the pose b, taken for the
+/// floating functions' one signature.
 template <class T>
 dynamic_matrix<T> base_spatial_inertia(const robot_model<T>& m, const base_pose<T>& b, const dynamic_vector<T>& q) {
   detail::check_floating_state(m, q, {}, "base_spatial_inertia");
