@@ -122,4 +122,17 @@ TEST(precision, tiers_have_names_digits_and_epsilon) {
   EXPECT_EQ(mpfr50(1) + tier_epsilon<mpfr50>() / 2, mpfr50(1));
   EXPECT_LT(tier_epsilon<mpfr50>(), mpfr50("1e-49"));
 }
+
+// The MPFR tiers keep their limbs in the number (allocate_stack), whose Boost 1.81 backend
+// prints a negative zero without its sign: the text of every tier keeps it, as reference
+// keys are made of it (a start like the three bodies' has -0 components).
+TEST(precision, a_negative_zero_keeps_its_sign_in_every_tiers_text) {
+  EXPECT_EQ(to_text(-0.0), "-0");
+  EXPECT_EQ(to_text(-mpfr50(0)), "-0");
+  EXPECT_EQ(to_text(mpfr50(0)), "0");
+  EXPECT_EQ(to_text(-mpfr100(0)), "-0");
+  EXPECT_EQ(scientific_text(-mpfr50(0), 3), "-0.000e+00");
+  EXPECT_EQ(scientific_text(mpfr50(0), 3), "0.000e+00");
+  EXPECT_EQ(scientific_text(-mpfr100(1) / 4, 3), "-2.500e-01");
+}
 }  // namespace

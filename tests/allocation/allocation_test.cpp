@@ -2,8 +2,8 @@
 // stepper (after the first, which may fill caches and its scratch) performs no heap
 // allocation, in double and, for the explicit steppers, in mpfr50. A program of its own:
 // global operator new is replaced to count (the standard library's allocations), GMP's
-// memory functions are replaced to count MPFR's (every new mpfr number allocates its
-// limbs), and Eigen is built with EIGEN_RUNTIME_NO_MALLOC and assertions on, so any Eigen
+// memory functions are replaced to count MPFR's (its temporaries; mpfr50 keeps its own
+// limbs inside the number, an MPFR number of dynamic allocation allocates them), and Eigen is built with EIGEN_RUNTIME_NO_MALLOC and assertions on, so any Eigen
 // heap allocation while forbidden aborts the test.
 #include <atomic>
 #include <cstdlib>
@@ -116,7 +116,9 @@ TEST(allocation, explicit_steppers_allocate_nothing_in_mpfr50) {
   ASSERT_TRUE(mp_counted);
   const long before = allocations.load();
   {
-    const mpfr50 x = mpfr50(1) / 3;  // the counter sees MPFR's limbs
+    // The counter sees MPFR's allocations: a number of dynamic allocation allocates its
+    // limbs (mpfr50 holds them inside the number, allocate_stack: nothing to see there).
+    const boost::multiprecision::mpfr_float_50 x = boost::multiprecision::mpfr_float_50(1) / 3;
     static_cast<void>(x);
   }
   EXPECT_GE(allocations.load() - before, 1);

@@ -12,6 +12,19 @@
 
 namespace mechcheck {
 
+namespace detail {
+/// Boost 1.81's MPFR backend of allocate_stack (mpfr50, mpfr100) prints a negative zero as
+/// "0" where its dynamic one and double print "-0": the sign put back, so that a value's
+/// text, and every reference key made of it, does not depend on the backend.
+template <class R>
+std::string with_sign_of_zero(const R& v, std::string text) {
+  using std::signbit;
+  using boost::multiprecision::signbit;
+  if (v == 0 && signbit(v) && (text.empty() || text[0] != '-')) text.insert(0, 1, '-');
+  return text;
+}
+}  // namespace detail
+
 /// A scalar of any tier (AD layers stripped) with max_digits10 significant digits;
 /// NaN prints as "nan" whatever its sign bit.
 template <class T>
@@ -25,7 +38,14 @@ std::string to_text(const T& x) {
   std::ostringstream os;
   os.precision(std::numeric_limits<R>::max_digits10);
   os << v;
-  return os.str();
+  return detail::with_sign_of_zero(v, os.str());
+}
+
+/// A multiprecision number in scientific notation with `digits` digits after the point
+/// (Boost's str), a negative zero with its sign: the text of reference keys and caches.
+template <class T>
+std::string scientific_text(const T& x, std::streamsize digits) {
+  return detail::with_sign_of_zero(x, x.str(digits, std::ios_base::scientific));
 }
 
 /// A vector as "(x0, x1, ...)".

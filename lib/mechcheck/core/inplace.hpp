@@ -2,12 +2,13 @@
 /// Arithmetic into existing scalars, for the hot loops of steppers and systems.
 ///
 /// A Boost.Multiprecision number with expression templates off builds a new number for
-/// every binary operation: for mpfr50 an MPFR allocation and release each time, which
-/// costs as much as the multiplication itself (a product into an existing number 17 ns,
-/// `c = a * b` 37 ns, on the 2-core machine). These helpers write the result into a
-/// number that already exists, through the backend's eval_* functions (Boost's
-/// documented backend interface), so a step that keeps its temporaries allocates
-/// nothing. For built-in types and AD scalars they are the plain expressions; the
+/// every binary operation: with MPFR's dynamic allocation an allocation and release each
+/// time, which cost as much as the multiplication itself (a product into an existing number
+/// 17 ns, `c = a * b` 37 ns, on the 2-core machine, measured before mpfr50 kept its limbs
+/// in the number: core/precision.hpp), and a new number's initialization still. These
+/// helpers write the result into a number that already exists, through the backend's
+/// eval_* functions (Boost's documented backend interface), so a step that keeps its
+/// temporaries builds no number. For built-in types and AD scalars they are the plain expressions; the
 /// rounding is the same either way (one rounding per operation).
 
 #include <cmath>

@@ -4,7 +4,7 @@
 /// Every module is templated on `Scalar`; these are the scalars the project runs in:
 ///   - `double`                      IEEE binary64, 15 decimal digits;
 ///   - `mechcheck::float128`         IEEE binary128, 33 decimal digits: the ~32-digit
-///                                   tier, chosen by measurement (docs/performance.md);
+///                                   tier, one format on every toolchain (docs/performance.md);
 ///                                   libquadmath's __float128 where the toolchain has it,
 ///                                   else (MECHCHECK_FLOAT128_SOFTWARE, set by the build)
 ///                                   Boost's cpp_bin_float_quad, the same format in C++;
@@ -13,6 +13,10 @@
 ///
 /// All multiprecision types use `et_off`: with expression templates `auto x = a*b`
 /// would capture references and template deduction would pick the expression type.
+/// The MPFR tiers keep their limbs inside the number (`allocate_stack`, Boost's
+/// static_mpfr_float_50 and _100): with MPFR's default allocation every temporary took a
+/// malloc and a free, about half of the mpfr50 laws' time (docs/performance.md). MPFR
+/// rounds correctly either way: the same numbers, to the last bit.
 
 #include <limits>
 #include <string_view>
@@ -36,10 +40,12 @@ using float128 = boost::multiprecision::cpp_bin_float_quad;
 #else
 using float128 = boost::multiprecision::float128;
 #endif
-using mpfr50 = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<50>,
-                                             boost::multiprecision::et_off>;
-using mpfr100 = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<100>,
-                                              boost::multiprecision::et_off>;
+using mpfr50 = boost::multiprecision::number<
+    boost::multiprecision::mpfr_float_backend<50, boost::multiprecision::allocate_stack>,
+    boost::multiprecision::et_off>;
+using mpfr100 = boost::multiprecision::number<
+    boost::multiprecision::mpfr_float_backend<100, boost::multiprecision::allocate_stack>,
+    boost::multiprecision::et_off>;
 
 /// Name and precision of a tier. `digits` counts decimal digits (numeric_limits::digits10).
 template <class Scalar>

@@ -102,7 +102,7 @@ void shape_like(Vec& v, const Vec& like) {
 }
 
 /// A step's temporaries W. Kept in the stepper for multiprecision and AD scalars, so that
-/// each step reuses them (for mpfr50 every new number is an MPFR allocation); made fresh
+/// each step reuses them (a new multiprecision number costs its initialization); made fresh
 /// on the stack for built-in types, where the compiler keeps them in registers (kept in
 /// the object they go through memory: a Verlet step in double measured 1.5x slower).
 template <class W, class Scalar>

@@ -8,6 +8,7 @@
 #include <Eigen/Cholesky>
 
 #include "mechcheck/audit/problems/certified.hpp"
+#include "mechcheck/core/format.hpp"
 #include "mechcheck/audit/engines/scenarios.hpp"
 #include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/harness/generators.hpp"
@@ -92,7 +93,7 @@ scenario robot_scenario(std::string name, const robots::robot& r, const Eigen::V
   // The start's momenta p0 = M(q0) qdot0 in mpfr50 (qdot0 and q0 are exact there), as text.
   const dynamic_vector<mpfr50> q_mp = q0.cast<mpfr50>(), qdot_mp = qdot0.cast<mpfr50>();
   const dynamic_vector<mpfr50> p_mp = robots::robot_hamiltonian<mpfr50>{in_mp.get()}.mass_matrix(q_mp) * qdot_mp;
-  for (Eigen::Index i = 0; i < n; ++i) m.p0.push_back(p_mp(i).str(60, std::ios_base::scientific));
+  for (Eigen::Index i = 0; i < n; ++i) m.p0.push_back(scientific_text(p_mp(i), 60));
   hamiltonian_model<hamiltonian_mp> model{m, hamiltonian_mp{in_mp}};
   const std::shared_ptr<const robot_start> shared = start;
   s.robot = shared;

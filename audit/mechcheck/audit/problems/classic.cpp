@@ -3,6 +3,7 @@
 #include "mechcheck/audit/problems/classic.hpp"
 
 #include "mechcheck/integrators/systems.hpp"
+#include "mechcheck/core/format.hpp"
 
 namespace mechcheck::audit {
 
@@ -67,7 +68,7 @@ problem<T> gravity_problem(problem_definition d, int dim, const std::vector<std:
   for (std::size_t i = 0; i < velocities.size(); ++i) {
     const mpfr100 p = read_coefficient(masses[i / std::size_t(dim)], "mass").value *
                       read_coefficient(velocities[i], "velocity").value;
-    d.p0.push_back(p.str(100, std::ios_base::scientific));
+    d.p0.push_back(scientific_text(p, 100));
   }
   d.parameters = "dim=" + std::to_string(dim) + "|masses=" + joined(masses) + "|G=" + g;
   d.separable = true;

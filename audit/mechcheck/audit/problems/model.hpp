@@ -32,6 +32,7 @@
 
 #include "mechcheck/audit/problems/reference_problem.hpp"
 #include "mechcheck/core.hpp"
+#include "mechcheck/core/format.hpp"
 #include "mechcheck/hamiltonian/legendre.hpp"
 #include "mechcheck/integrators/systems.hpp"
 #include "mechcheck/poisson/bracket.hpp"
@@ -323,7 +324,7 @@ void check_constraints(const model_setup& s, const G& g, const dynamic_vector<mp
 inline std::string default_step(const model_setup& s, const std::string& given, int divisor) {
   if (!given.empty()) return given;
   const mpfr100 t = read_coefficient(s.t_end, s.name + ": t_end").value;
-  return mpfr100(t / divisor).str(60, std::ios_base::scientific);
+  return scientific_text(mpfr100(t / divisor), 60);
 }
 
 inline problem_definition definition_of(const model_setup& s) {
@@ -417,7 +418,7 @@ problem<T> hamiltonian_problem(const model_setup& s, const H& h, const F& integr
   const bool separable = s.separable ? *s.separable : separable_at_drawn_points(s, h, x0);
   problem_definition d = definition_of(s);
   d.p0.clear();
-  for (Eigen::Index i = 0; i < x0.p.size(); ++i) d.p0.push_back(x0.p(i).str(60, std::ios_base::scientific));
+  for (Eigen::Index i = 0; i < x0.p.size(); ++i) d.p0.push_back(scientific_text(x0.p(i), 60));
   d.separable = separable;
   const model_system<H, T> system{h, separable, narrowed<T>(x0).q, narrowed<T>(x0).p};
   const model_system<H, mpfr50> reference{h, separable, x0.q, x0.p};

@@ -13,12 +13,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "mechcheck/core/format.hpp"
+
 namespace mechcheck::audit {
 
 namespace {
 using json = nlohmann::ordered_json;
 
-std::string digits55(const mpfr50& x) { return x.str(55, std::ios_base::scientific); }
+std::string digits55(const mpfr50& x) { return scientific_text(x, 55); }
 
 json vector_json(const dynamic_vector<mpfr50>& v) {
   json a = json::array();

@@ -19,6 +19,7 @@
 #include "mechcheck/audit/problems/reference_cache.hpp"
 #include "mechcheck/audit/problems/reference_solution.hpp"
 #include "mechcheck/audit/tableaus/tableau_file.hpp"
+#include "mechcheck/core/format.hpp"
 
 namespace mechcheck::audit {
 
@@ -69,7 +70,7 @@ class reference_source {
   /// The certified state at t (short: a time within one step's reach, where a single
   /// step starts the search).
   const certified_state& at(const mpfr50& t, bool short_time) {
-    const std::string tk = t.str(60, std::ios_base::scientific);
+    const std::string tk = scientific_text(t, 60);
     std::lock_guard<std::mutex> lock(mutex_);
     auto it = memo_.find(tk);
     if (it != memo_.end()) return it->second;
