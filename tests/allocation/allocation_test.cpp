@@ -3,8 +3,9 @@
 // allocation, in double and, for the explicit steppers, in mpfr50. A program of its own:
 // global operator new is replaced to count (the standard library's allocations), GMP's
 // memory functions are replaced to count MPFR's (its temporaries; mpfr50 keeps its own
-// limbs inside the number, an MPFR number of dynamic allocation allocates them), and Eigen is built with EIGEN_RUNTIME_NO_MALLOC and assertions on, so any Eigen
-// heap allocation while forbidden aborts the test.
+// limbs inside the number, an MPFR number of dynamic allocation allocates them), and Eigen
+// is built with EIGEN_RUNTIME_NO_MALLOC and assertions on, so any Eigen heap allocation
+// while forbidden aborts the test.
 #include <atomic>
 #include <cstdlib>
 #include <new>

@@ -8,8 +8,8 @@
 /// in the number: core/precision.hpp), and a new number's initialization still. These
 /// helpers write the result into a number that already exists, through the backend's
 /// eval_* functions (Boost's documented backend interface), so a step that keeps its
-/// temporaries builds no number. For built-in types and AD scalars they are the plain expressions; the
-/// rounding is the same either way (one rounding per operation).
+/// temporaries builds no number. For built-in types and AD scalars they are the plain
+/// expressions; the rounding is the same either way (one rounding per operation).
 
 #include <cmath>
 #include <type_traits>

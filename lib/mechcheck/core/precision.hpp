@@ -15,7 +15,7 @@
 /// would capture references and template deduction would pick the expression type.
 /// The MPFR tiers keep their limbs inside the number (`allocate_stack`, Boost's
 /// static_mpfr_float_50 and _100): with MPFR's default allocation every temporary took a
-/// malloc and a free, about half of the mpfr50 laws' time (docs/performance.md). MPFR
+/// malloc and a free, about half of the mpfr50 laws' time (docs/build.md). MPFR
 /// rounds correctly either way: the same numbers, to the last bit.
 
 #include <limits>

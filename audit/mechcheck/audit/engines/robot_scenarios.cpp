@@ -8,9 +8,9 @@
 #include <Eigen/Cholesky>
 
 #include "mechcheck/audit/problems/certified.hpp"
-#include "mechcheck/core/format.hpp"
 #include "mechcheck/audit/engines/scenarios.hpp"
 #include "mechcheck/audit/problems/urdf.hpp"
+#include "mechcheck/core/format.hpp"
 #include "mechcheck/harness/generators.hpp"
 #include "mechcheck/robots/dynamics.hpp"
 

@@ -2,8 +2,8 @@
 // their systems, references and invariants compiled once.
 #include "mechcheck/audit/problems/classic.hpp"
 
-#include "mechcheck/integrators/systems.hpp"
 #include "mechcheck/core/format.hpp"
+#include "mechcheck/integrators/systems.hpp"
 
 namespace mechcheck::audit {
 
