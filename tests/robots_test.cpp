@@ -13,6 +13,7 @@
 
 #include <rapidcheck.h>
 
+#include "mechcheck/audit/dynamics/dynamics.hpp"
 #include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/harness/generators.hpp"
 #include "mechcheck/robots.hpp"
@@ -130,20 +131,11 @@ TEST(robots, the_recursive_algorithms_agree_with_the_lagrangian_on_random_trees_
   EXPECT_EQ(failure, "");
 }
 
-/// A free rigid body (a floating base and no joints) with its centre of mass at c and its
-/// inertia I about it, both in its own frame: in its body twist u = (v; w), Newton and Euler
-/// about its origin give f = m (vdot + w x v + wdot x c + w x (w x c) - R^T g) and n = I wdot +
-/// w x I w + c x f, and M = [m 1, -m [c]x; m [c]x, I + m (|c|^2 1 - c c^T)].
+/// The free rigid body (two_link_arm.hpp: free_body) at a pose, twist and twist rate against
+/// Newton and Euler in its own frame (free_body_terms).
 template <class T>
 void expect_free_body_closed_form() {
-  rb::robot r;
-  r.name = "free_body";
-  rb::inertial b;
-  b.mass = 3;
-  b.origin.xyz = {0.25, -0.125, 0.5};
-  b.inertia << 0.5, 0.0625, -0.03125, 0.0625, 0.375, 0.125, -0.03125, 0.125, 0.75;
-  r.links.push_back({"body", b});
-  r.gravity = {0.5, -1, -9.75};
+  const rb::robot r = free_body();
   const rb::robot_model<T> m(r);
   rb::pose at;
   at.xyz = {0.75, -0.5, 1.25};
@@ -152,21 +144,9 @@ void expect_free_body_closed_form() {
   dynamic_vector<T> u(6), udot(6);
   u << T(0.5), T(-1), T(1.5), T(2), T(-0.75), T(1.25);
   udot << T(-1), T(0.25), T(3), T(0.5), T(-2), T(1);
-  const vector3<T> v = u.head(3), w = u.tail(3), vd = udot.head(3), wd = udot.tail(3);
-  const vector3<T> c = b.origin.xyz.cast<T>();
-  const matrix3<T> inertia = b.inertia.cast<T>();
-  const vector3<T> g_body = base.rotation.transpose() * r.gravity.cast<T>();
-  const vector3<T> f = (vd + w.cross(v) + wd.cross(c) + w.cross(w.cross(c)) - g_body) * T(b.mass);
-  const vector3<T> n = inertia * wd + w.cross(vector3<T>(inertia * w)) + c.cross(f);
-  dynamic_vector<T> want(6);
-  want << f, n;
-  dynamic_matrix<T> mass = dynamic_matrix<T>::Zero(6, 6);
-  matrix3<T> lever;
-  lever << T(0), -c(2), c(1), c(2), T(0), -c(0), -c(1), c(0), T(0);
-  mass.block(0, 0, 3, 3) = matrix3<T>::Identity() * T(b.mass);
-  mass.block(0, 3, 3, 3) = -lever * T(b.mass);
-  mass.block(3, 0, 3, 3) = lever * T(b.mass);
-  mass.block(3, 3, 3, 3) = inertia + (matrix3<T>::Identity() * c.squaredNorm() - c * c.transpose()) * T(b.mass);
+  const free_body_closed_form<T> closed = free_body_terms<T>(r, base.rotation, u, udot);
+  const dynamic_vector<T>& want = closed.q;
+  const dynamic_matrix<T>& mass = closed.m;
   const dynamic_vector<T> none(0);
   const rb::motion_terms<T> e = rb::floating_motion_terms_at(m, base, none, u);
   // Each side a few dozen roundings of terms up to |m g| and m |w|^2 |c| (about 30): 64 eps of
@@ -438,8 +418,9 @@ TEST(robots, urdf_gives_an_axis_its_default_and_its_unit_length_and_says_so) {
 
 TEST(robots, urdf_round_trips_every_number_and_refuses_what_is_not_urdf) {
   EXPECT_EQ(seeded_check(100, [] {
-    const rb::robot r = *generators::random_robots(8);
+    const rb::robot r = (*audit::dynamics_robot_cases(8)).robot;  // fixed and floating
     const rb::robot back = audit::parse_urdf(audit::to_urdf(r), "round trip");
+    RC_ASSERT(back.floating == r.floating);
     RC_ASSERT(back.links.size() == r.links.size());
     RC_ASSERT(back.joints.size() == r.joints.size());
     RC_ASSERT(back.gravity == r.gravity);
@@ -471,8 +452,23 @@ TEST(robots, urdf_round_trips_every_number_and_refuses_what_is_not_urdf) {
   refused("<model/>", "not URDF: no <robot> element");
   const std::string head = "<robot name='r'><link name='a'/><link name='b'><inertial><mass value='1'/>"
                            "<inertia ixx='1' ixy='0' ixz='0' iyy='1' iyz='0' izz='1'/></inertial></link>";
-  refused(head + "<joint name='j' type='floating'><parent link='a'/><child link='b'/></joint></robot>",
-          "joint j: type floating is not modelled");
+  // A floating joint from a link that is nothing else floats the base; anywhere else it is
+  // refused by name.
+  const rb::robot floating =
+      audit::parse_urdf(head + "<joint name='j' type='floating'><parent link='a'/><child link='b'/></joint></robot>", "f");
+  EXPECT_TRUE(floating.floating);
+  ASSERT_EQ(floating.links.size(), 1u);
+  EXPECT_EQ(floating.links[0].name, "b");
+  EXPECT_TRUE(floating.joints.empty());
+  const std::string third = "<link name='c'><inertial><mass value='1'/><inertia ixx='1' ixy='0' ixz='0' iyy='1' "
+                            "iyz='0' izz='1'/></inertial></link>";
+  refused(head + third + "<joint name='k' type='revolute'><parent link='a'/><child link='c'/><axis xyz='0 0 1'/></joint>"
+          "<joint name='j' type='floating'><parent link='a'/><child link='b'/></joint></robot>",
+          "joint j (floating): its parent link a is joined to others (joint k)");
+  refused(head + third + "<joint name='j' type='floating'><parent link='c'/><child link='b'/></joint></robot>",
+          "joint j (floating): its parent link c has an <inertial>");
+  refused(head + "<joint name='j' type='planar'><parent link='a'/><child link='b'/></joint></robot>",
+          "joint j: type planar is not modelled");
   refused(head + "<joint name='j' type='hinge'><parent link='a'/><child link='b'/></joint></robot>",
           "joint j: unknown type \"hinge\"");
   refused(head + "<joint name='j' type='revolute'><parent link='a'/><child link='b'/><axis xyz='0 1'/></joint></robot>",

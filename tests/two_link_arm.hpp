@@ -1,6 +1,7 @@
 #pragma once
-// The planar two-link arm that the robots' tests and the dynamics audit's tests pin their
-// references to, its closed-form M and h, and a property run from MECHCHECK_SEED's seed.
+// The planar two-link arm and the free rigid body that the robots' tests and the dynamics
+// audit's tests pin their references to, their closed forms, and a property run from
+// MECHCHECK_SEED's seed.
 
 #include <cmath>
 #include <cstdlib>
@@ -88,6 +89,56 @@ inline arm_closed_form arm_terms(double m1, double m2, double l1, double c1, dou
   out.h(0) = -k * (2 * qdot(0) * qdot(1) + qdot(1) * qdot(1)) + m1 * g * c1 * std::sin(q(0)) +
              m2 * g * (l1 * std::sin(q(0)) + c2 * std::sin(q(0) + q(1)));
   out.h(1) = k * qdot(0) * qdot(0) + m2 * g * c2 * std::sin(q(0) + q(1));
+  return out;
+}
+
+/// A free rigid body (a floating base and no joints): mass 3, its centre of mass at c =
+/// (0.25, -0.125, 0.5) and a full inertia I about it, both in its own frame, under a
+/// gravity off the vertical.
+inline rb::robot free_body() {
+  rb::robot r;
+  r.name = "free_body";
+  r.floating = true;
+  rb::inertial b;
+  b.mass = 3;
+  b.origin.xyz = {0.25, -0.125, 0.5};
+  b.inertia << 0.5, 0.0625, -0.03125, 0.0625, 0.375, 0.125, -0.03125, 0.125, 0.75;
+  r.links.push_back({"body", b});
+  r.gravity = {0.5, -1, -9.75};
+  return r;
+}
+
+template <class T>
+struct free_body_closed_form {
+  mechcheck::dynamic_matrix<T> m;  ///< M, 6 x 6
+  mechcheck::dynamic_vector<T> q;  ///< Q = M udot + h = (f; n)
+};
+
+/// The free body's M and Q at the base rotation R in its body twist u = (v; w) and its rate:
+/// Newton and Euler about its origin, f = m (vdot + w x v + wdot x c + w x (w x c) - R^T g) and
+/// n = I wdot + w x I w + c x f, and M = [m 1, -m [c]x; m [c]x, I + m (|c|^2 1 - c c^T)].
+template <class T>
+free_body_closed_form<T> free_body_terms(const rb::robot& r, const mechcheck::matrix3<T>& rotation,
+                                         const mechcheck::dynamic_vector<T>& u, const mechcheck::dynamic_vector<T>& udot) {
+  using mechcheck::matrix3;
+  using mechcheck::vector3;
+  const rb::inertial& b = *r.links.front().body;
+  const vector3<T> v = u.head(3), w = u.tail(3), vd = udot.head(3), wd = udot.tail(3);
+  const vector3<T> c = b.origin.xyz.cast<T>();
+  const matrix3<T> inertia = b.inertia.cast<T>();
+  const vector3<T> g_body = rotation.transpose() * r.gravity.cast<T>();
+  const vector3<T> f = (vd + w.cross(v) + wd.cross(c) + w.cross(w.cross(c)) - g_body) * T(b.mass);
+  const vector3<T> n = inertia * wd + w.cross(vector3<T>(inertia * w)) + c.cross(f);
+  free_body_closed_form<T> out;
+  out.q.resize(6);
+  out.q << f, n;
+  out.m = mechcheck::dynamic_matrix<T>::Zero(6, 6);
+  matrix3<T> lever;
+  lever << T(0), -c(2), c(1), c(2), T(0), -c(0), -c(1), c(0), T(0);
+  out.m.block(0, 0, 3, 3) = matrix3<T>::Identity() * T(b.mass);
+  out.m.block(0, 3, 3, 3) = -lever * T(b.mass);
+  out.m.block(3, 0, 3, 3) = lever * T(b.mass);
+  out.m.block(3, 3, 3, 3) = inertia + (matrix3<T>::Identity() * c.squaredNorm() - c * c.transpose()) * T(b.mass);
   return out;
 }
 

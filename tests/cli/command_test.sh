@@ -89,8 +89,11 @@ expect 1 "--dynamics matches no dynamics library" --dynamics 'kld' -o "$work/d"
 expect 0 "mass matrix .* within" --dynamics '*' --robots 20 -q --require '*' -o "$work/d"
 expect 0 "on arm .*forward dynamics .* within" --dynamics '*' --urdf "$source_dir/examples/robots/arm.urdf" --robots 20 -q \
   -o "$work/d"
-printf '<robot name="r"><link name="a"/><joint name="j" type="floating"/></robot>' > "$work/bad.urdf"
-expect 1 "bad.urdf: robot r: joint j: type floating is not modelled" --dynamics '*' --urdf "$work/bad.urdf" -o "$work/d"
+printf '<robot name="r"><link name="a"/><joint name="j" type="planar"/></robot>' > "$work/bad.urdf"
+expect 1 "bad.urdf: robot r: joint j: type planar is not modelled" --dynamics '*' --urdf "$work/bad.urdf" -o "$work/d"
+# A floating base (a floating joint from the world): MuJoCo holds it through its freejoint, KDL refuses it by name.
+printf '<robot name="r"><link name="world"/><link name="a"><inertial><origin xyz="0.1 0 0"/><mass value="2"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.2" iyz="0" izz="0.25"/></inertial></link><link name="b"><inertial><mass value="1"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial></link><joint name="free" type="floating"><parent link="world"/><child link="a"/></joint><joint name="j" type="continuous"><parent link="a"/><child link="b"/><origin xyz="0 0 -0.5"/><axis xyz="0 1 0"/></joint></robot>' > "$work/floating.urdf"
+expect 0 "kdl on r refused 10 of 10 .*KDL has no floating base" --dynamics '*' --urdf "$work/floating.urdf" --robots 10 -q -o "$work/d"
 # A user's file as ROS reads it: a moving joint that carries no mass is refused by name
 # before any library runs; a joint without <axis> takes URDF's default, and the report says so.
 printf '<robot name="r"><link name="a"/><link name="b"/><joint name="j" type="continuous"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/></joint></robot>' > "$work/massless.urdf"

@@ -88,12 +88,16 @@ struct robot {
   std::vector<link> links;
   std::vector<joint> joints;
   Eigen::Vector3d gravity{0, 0, -9.81};  ///< uniform gravitational acceleration, world frame (m/s^2)
+  /// The root link is free in space (a floating base: robots/floating.hpp), where URDF writes
+  /// a `floating` joint from a link named "world"; false: the root is the world's frame.
+  bool floating = false;
   /// What a reader took where the file was silent or inexact (a joint without <axis> given
   /// URDF's default, an axis normalized), one sentence each, for the report.
   std::vector<std::string> readings;
 };
 
-/// A validated robot's tree: its root link (fixed to the world at the world's frame), the
+/// A validated robot's tree: its root link (fixed to the world at the world's frame, or free
+/// where the robot floats), the
 /// joints in an order that puts each parent before its children, and each joint's
 /// coordinate (-1 for a fixed joint). Coordinates are numbered in the joints' order in the
 /// description (URDF's order), moving joints only.
@@ -125,8 +129,10 @@ inline void require_finite_pose(const pose& p, const std::string& where) {
 /// triangle inequality I1 + I2 >= I3 (notes eqs 154-156; tolerance 64 eps |I|); an axis
 /// that is zero or not of unit length (to 1e-9, URDF writes axes to a few digits); a
 /// moving joint whose child and everything below it are massless (no inertial: its
-/// coordinate has no inertia); a negative armature, damping or friction; and
-/// non_finite_error for a number that is not finite.
+/// coordinate has no inertia); on a floating base, a robot without mass or a moving joint
+/// with no mass on the base's side (its rate moves the same bodies as the base's); a
+/// negative armature, damping or friction; and non_finite_error for a number that is not
+/// finite.
 inline tree validate(const robot& r) {
   const std::string who = "robot " + r.name;
   if (r.links.empty()) throw robot_error(who + ": no links");
@@ -234,6 +240,15 @@ inline tree validate(const robot& r) {
       throw robot_error(who + ": joint " + r.joints[j].name + " moves link " + r.joints[j].child +
                         ", which carries no mass, nor does any link below it (no <inertial>): the mass matrix is "
                         "singular in its coordinate");
+  if (r.floating) {
+    const double total = subtree_mass[std::size_t(t.root)];
+    if (!(total > 0)) throw robot_error(who + " on a floating base: no link carries mass");
+    for (std::size_t j = 0; j < nj; ++j)
+      if (t.coordinate[j] >= 0 && !(total - subtree_mass[std::size_t(t.child_link[j])] > 0) && !(r.joints[j].armature > 0))
+        throw robot_error(who + " on a floating base: joint " + r.joints[j].name + " has no mass on the base's side (link " +
+                          r.links[std::size_t(t.root)].name + " and the links not below the joint carry none): its "
+                          "rate moves the same bodies as the base's, and the mass matrix is singular");
+  }
   return t;
 }
 

@@ -1,12 +1,15 @@
 // DART's equations of motion as a dynamics_library (adapters/dart_engine.hpp).
 #include <dart/dynamics/BodyNode.hpp>
 #include <dart/dynamics/DegreeOfFreedom.hpp>
+#include <dart/dynamics/FreeJoint.hpp>
 #include <dart/dynamics/PrismaticJoint.hpp>
 #include <dart/dynamics/RevoluteJoint.hpp>
 #include <dart/dynamics/Skeleton.hpp>
 #include <dart/dynamics/WeldJoint.hpp>
 
 #include <memory>
+
+#include <Eigen/Geometry>
 #include <string>
 #include <vector>
 
@@ -55,15 +58,29 @@ SkeletonPtr robot_skeleton(const robots::robot& r, coordinate_order& order) {
   const robots::link& root = r.links[std::size_t(t.root)];
   BodyNode::Properties root_body;
   root_body.mName = root.name;
-  body[std::size_t(t.root)] = skeleton
-                                  ->createJointAndBodyNodePair<WeldJoint>(
-                                      nullptr, joint_properties<WeldJoint>(root.name + "_world", Eigen::Isometry3d::Identity()),
-                                      root_body)
-                                  .second;
-  // The root is welded to the world: its inertia never enters the equations. A massless
-  // root keeps DART's default (mass 1), which DART does not warn about as it does about 0.
-  if (root.body) body[std::size_t(t.root)]->setInertia(inertia_of(root));
-  order.order.assign(std::size_t(dofs), -1);
+  const int base = r.floating ? 6 : 0;
+  order.order.assign(std::size_t(dofs + base), -1);
+  if (r.floating) {
+    // A floating base: the root on a FreeJoint, its dofs the Skeleton's first six, the
+    // angular velocity then the linear one, both in the root's frame (the state's v_b at 0..2
+    // and w_b at 3..5).
+    body[std::size_t(t.root)] =
+        skeleton
+            ->createJointAndBodyNodePair<FreeJoint>(
+                nullptr, joint_properties<FreeJoint>(root.name + "_free", Eigen::Isometry3d::Identity()), root_body)
+            .second;
+    body[std::size_t(t.root)]->setInertia(inertia_of(root));
+    for (int i = 0; i < 6; ++i) order.order[std::size_t(i)] = i < 3 ? i + 3 : i - 3;
+  } else {
+    body[std::size_t(t.root)] = skeleton
+                                    ->createJointAndBodyNodePair<WeldJoint>(
+                                        nullptr, joint_properties<WeldJoint>(root.name + "_world", Eigen::Isometry3d::Identity()),
+                                        root_body)
+                                    .second;
+    // The root is welded to the world: its inertia never enters the equations. A massless
+    // root keeps DART's default (mass 1), which DART does not warn about as it does about 0.
+    if (root.body) body[std::size_t(t.root)]->setInertia(inertia_of(root));
+  }
   for (const int k : t.order) {
     const robots::joint& j = r.joints[std::size_t(k)];
     BodyNode* parent = body[std::size_t(t.parent_link[std::size_t(k)])];
@@ -94,11 +111,11 @@ SkeletonPtr robot_skeleton(const robots::robot& r, coordinate_order& order) {
     made.second->setInertia(inertia_of(child));
     body[std::size_t(t.child_link[std::size_t(k)])] = made.second;
     if (const int c = t.coordinate[std::size_t(k)]; c >= 0)
-      order.order[made.first->getDof(0)->getIndexInSkeleton()] = c;
+      order.order[made.first->getDof(0)->getIndexInSkeleton()] = c + base;
   }
-  if (static_cast<int>(skeleton->getNumDofs()) != dofs)
+  if (static_cast<int>(skeleton->getNumDofs()) != dofs + base)
     throw error("dart: the Skeleton has " + std::to_string(skeleton->getNumDofs()) + " degrees of freedom, the robot " +
-                std::to_string(dofs));
+                std::to_string(dofs + base));
   return skeleton;
 }
 
@@ -106,20 +123,20 @@ namespace {
 class dart_model final : public dynamics_model {
  public:
   explicit dart_model(const robots::robot& r)
-      : skeleton_(robot_skeleton(r, order_)), n_(static_cast<int>(order_.order.size())) {}
+      : skeleton_(robot_skeleton(r, order_)), n_(static_cast<int>(order_.order.size())), floating_(r.floating) {}
 
   std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override {
-    skeleton_->setPositions(order_.to_library(q));
+    set_positions(q);
     return order_.from_library(skeleton_->getMassMatrix());
   }
   std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) override {
-    skeleton_->setPositions(in_dart(q));
+    set_positions(q);
     skeleton_->setVelocities(in_dart(qdot));
     return from_dart(skeleton_->getCoriolisAndGravityForces());
   }
   std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                                          const Eigen::VectorXd& qddot) override {
-    skeleton_->setPositions(in_dart(q));
+    set_positions(q);
     skeleton_->setVelocities(in_dart(qdot));
     skeleton_->setAccelerations(in_dart(qddot));
     skeleton_->computeInverseDynamics(false, false, false);
@@ -127,7 +144,7 @@ class dart_model final : public dynamics_model {
   }
   std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                                          const Eigen::VectorXd& tau) override {
-    skeleton_->setPositions(in_dart(q));
+    set_positions(q);
     skeleton_->setVelocities(in_dart(qdot));
     skeleton_->setForces(in_dart(tau));
     skeleton_->computeForwardDynamics();
@@ -135,12 +152,26 @@ class dart_model final : public dynamics_model {
   }
 
  private:
+  /// q in DART's positions; a floating base's pose (q's head: position, quaternion w x y z,
+  /// normalized) as the FreeJoint's six (FreeJoint::convertToPositions of the root's transform).
+  void set_positions(const Eigen::VectorXd& q) {
+    if (!floating_) return skeleton_->setPositions(in_dart(q));
+    Eigen::VectorXd padded = Eigen::VectorXd::Zero(n_);
+    padded.tail(n_ - 6) = q.tail(n_ - 6);
+    Eigen::VectorXd positions = in_dart(padded);
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.linear() = Eigen::Quaterniond(q(3), q(4), q(5), q(6)).normalized().toRotationMatrix();
+    pose.translation() = q.head<3>();
+    positions.head<6>() = FreeJoint::convertToPositions(pose);
+    skeleton_->setPositions(positions);
+  }
   Eigen::VectorXd in_dart(const Eigen::VectorXd& x) const { return order_.to_library(x); }
   Eigen::VectorXd from_dart(const Eigen::VectorXd& x) const { return order_.from_library(x); }
 
   coordinate_order order_;  ///< the Skeleton's degrees of freedom (filled by robot_skeleton)
   SkeletonPtr skeleton_;
-  int n_ = 0;
+  int n_ = 0;  ///< the Skeleton's degrees of freedom
+  bool floating_ = false;
 };
 }  // namespace
 
@@ -155,7 +186,10 @@ dynamics_library dynamics() {
              "root: welded to the world, it keeps DART's default mass 1, which never enters the equations), a "
              "RevoluteJoint or PrismaticJoint with T_ParentBodyToJoint the joint's origin and the axis in the "
              "child's frame, a WeldJoint for a fixed joint and for the root to the world; no joint damping, "
-             "spring, Coulomb friction or enforced limit (DART 6.12 has no rotor inertia)";
+             "spring, Coulomb friction or enforced limit (DART 6.12 has no rotor inertia); a floating base on a "
+             "FreeJoint (positions: convertToPositions of the root's transform; velocities: the root's spatial "
+             "velocity in its own frame, angular first, (w_b; v_b), and their rates; forces (n_b; f_b))";
+  l.no_floating_base.clear();
   l.load = [](const robots::robot& r) -> std::unique_ptr<dynamics_model> { return std::make_unique<dart_model>(r); };
   return l;
 }

@@ -152,6 +152,9 @@ dynamics_library kdl_dynamics() {
              "and none of its solvers reads it (getDamping is called nowhere in its source), so a robot with "
              "damping is refused";
   l.sets_armature = true;
+  l.no_floating_base = "KDL has no floating base: a KDL::Chain's and a KDL::Tree's root is the world's frame, and "
+                       "its Joint::JointType (RotAxis, RotX..Z, TransAxis, TransX..Z, Fixed; kdl/joint.hpp) has no joint of six "
+                       "degrees of freedom";
   l.load = [](const robots::robot& r) -> std::unique_ptr<dynamics_model> { return std::make_unique<kdl_model>(r); };
   return l;
 }

@@ -29,6 +29,18 @@ std::string nums(const double* x, int n) {
   return out;
 }
 
+/// A link's inertial (the tensor turned into the body frame, R_o I R_o^T, about the centre of
+/// mass: fullinertia); nothing for a massless link.
+void inertial_xml(const robots::link& l, std::string& out) {
+  if (!l.body) return;
+  const Eigen::Matrix3d ro = robots::rpy_rotation<double>(l.body->origin.rpy);
+  const Eigen::Matrix3d i = ro * l.body->inertia * ro.transpose();
+  const double full[6] = {i(0, 0), i(1, 1), i(2, 2), (i(0, 1) + i(1, 0)) / 2, (i(0, 2) + i(2, 0)) / 2,
+                          (i(1, 2) + i(2, 1)) / 2};
+  out += "<inertial pos=\"" + nums(l.body->origin.xyz.data(), 3) + "\" mass=\"" + num(l.body->mass) +
+         "\" fullinertia=\"" + nums(full, 6) + "\"/>";
+}
+
 /// A body's MJCF: its frame (the joint's origin: pos, quat w x y z of URDF's rpy), its
 /// inertial (the tensor turned into the body frame, R_o I R_o^T, about the centre of mass:
 /// fullinertia), its joint (hinge or slide along the axis, at the body's origin; none for a
@@ -40,14 +52,7 @@ void body_xml(const robots::robot& r, const robots::tree& t, int link, int joint
     const Eigen::Quaterniond q(robots::rpy_rotation<double>(j.origin.rpy));
     const double quat[4] = {q.w(), q.x(), q.y(), q.z()};
     out += "<body name=\"" + l.name + "\" pos=\"" + nums(j.origin.xyz.data(), 3) + "\" quat=\"" + nums(quat, 4) + "\">";
-    if (l.body) {
-      const Eigen::Matrix3d ro = robots::rpy_rotation<double>(l.body->origin.rpy);
-      const Eigen::Matrix3d i = ro * l.body->inertia * ro.transpose();
-      const double full[6] = {i(0, 0), i(1, 1), i(2, 2), (i(0, 1) + i(1, 0)) / 2, (i(0, 2) + i(2, 0)) / 2,
-                              (i(1, 2) + i(2, 1)) / 2};
-      out += "<inertial pos=\"" + nums(l.body->origin.xyz.data(), 3) + "\" mass=\"" + num(l.body->mass) +
-             "\" fullinertia=\"" + nums(full, 6) + "\"/>";
-    }
+    inertial_xml(l, out);
     if (j.type != robots::joint_type::fixed)
       out += std::string("<joint name=\"") + j.name + "\" type=\"" +
              (j.type == robots::joint_type::prismatic ? "slide" : "hinge") + "\" pos=\"0 0 0\" axis=\"" +
@@ -74,8 +79,17 @@ std::string robot_mjcf(const robots::robot& r) {
   std::string out = "<mujoco model=\"" + r.name +
                     "\"><compiler angle=\"radian\" inertiafromgeom=\"false\"/><option gravity=\"" +
                     nums(r.gravity.data(), 3) + "\"/><worldbody>";
-  body_xml(r, t, t.root, -1, out);
-  return out + "</worldbody></mujoco>";
+  if (!r.floating) {
+    body_xml(r, t, t.root, -1, out);
+    return out + "</worldbody></mujoco>";
+  }
+  // A floating base: the root link a body of its own with a freejoint at its origin.
+  const robots::link& root = r.links[std::size_t(t.root)];
+  out += "<body name=\"" + root.name + "\"><freejoint name=\"" + root.name + "_free\"/>";
+  inertial_xml(root, out);
+  for (std::size_t k = 0; k < r.joints.size(); ++k)
+    if (t.parent_link[k] == t.root) body_xml(r, t, t.child_link[k], static_cast<int>(k), out);
+  return out + "</body></worldbody></mujoco>";
 }
 
 robots::robot robot_of(const mjModel* m, const std::vector<int>& dof_of_coordinate) {
@@ -87,8 +101,10 @@ robots::robot robot_of(const mjModel* m, const std::vector<int>& dof_of_coordina
   robots::robot r;
   r.name = "mujoco";
   for (int i = 0; i < 3; ++i) r.gravity(i) = m->opt.gravity[i];
+  // A floating base: the world's one child carries a free joint, and is the root link.
+  r.floating = m->nbody > 1 && m->body_jntnum[1] == 1 && m->jnt_type[m->body_jntadr[1]] == mjJNT_FREE;
   std::vector<robots::joint> moving(static_cast<std::size_t>(n)), fixed;
-  for (int b = 0; b < m->nbody; ++b) {
+  for (int b = r.floating ? 1 : 0; b < m->nbody; ++b) {
     robots::link l;
     l.name = body_name(b);
     if (b > 0 && m->body_mass[b] > 0) {
@@ -102,7 +118,7 @@ robots::robot robot_of(const mjModel* m, const std::vector<int>& dof_of_coordina
       l.body = in;
     }
     r.links.push_back(l);
-    if (b == 0) continue;
+    if (b == 0 || (r.floating && b == 1)) continue;
     robots::joint j;
     j.parent = body_name(m->body_parentid[b]);
     j.child = l.name;
@@ -119,6 +135,8 @@ robots::robot robot_of(const mjModel* m, const std::vector<int>& dof_of_coordina
       continue;
     }
     const int id = m->body_jntadr[b];
+    if (m->jnt_type[id] != mjJNT_HINGE && m->jnt_type[id] != mjJNT_SLIDE)
+      throw error("mujoco: joint " + std::string(mj_id2name(m, mjOBJ_JOINT, id)) + " is neither a hinge nor a slide");
     for (int i = 0; i < 3; ++i)
       if (m->jnt_pos[3 * id + i] != 0) throw error("mujoco: joint " + std::string(mj_id2name(m, mjOBJ_JOINT, id)) +
                                                    " is not at its body's origin");
@@ -137,11 +155,17 @@ robots::robot robot_of(const mjModel* m, const std::vector<int>& dof_of_coordina
 }
 
 namespace {
+/// MuJoCo's freejoint against the state's floating base (dynamics_state): its qpos is the
+/// same (position, quaternion w x y z); its qvel has the linear velocity in the world, R v_b,
+/// and the angular one in the body, w_b (base_map).
+constexpr base_convention freejoint_velocity{false, true, false};
+
 class mujoco_model final : public dynamics_model {
  public:
-  mujoco_model(const robots::robot& r, const std::string& xml) {
+  mujoco_model(const robots::robot& r, const std::string& xml) : floating_(r.floating) {
     const robots::tree t = robots::validate(r);
     n_ = t.dofs;
+    const int base = floating_ ? 6 : 0;
     try {
       m_.reset(load(xml));
     } catch (const error& e) {
@@ -149,33 +173,36 @@ class mujoco_model final : public dynamics_model {
     }
     for (int i = 0; i < 3; ++i) m_->opt.gravity[i] = r.gravity(i);  // URDF has none
     d_.reset(mj_makeData(m_.get()));
-    if (m_->nv != n_)
+    if (m_->nv != n_ + base)
       throw robot_refused("mujoco: the model has " + std::to_string(m_->nv) + " degrees of freedom, the robot " +
-                          std::to_string(n_));
+                          std::to_string(n_ + base));
+    qpos_.assign(std::size_t(n_ + (floating_ ? 7 : 0)), 0);
+    dof_.assign(std::size_t(n_ + base), 0);
+    if (floating_) {
+      const std::string name = r.links[std::size_t(t.root)].name + "_free";
+      const int id = mj_name2id(m_.get(), mjOBJ_JOINT, name.c_str());
+      if (id < 0 || m_->jnt_type[id] != mjJNT_FREE) throw robot_refused("mujoco: the model has no free joint " + name);
+      for (int i = 0; i < 7; ++i) qpos_[std::size_t(i)] = m_->jnt_qposadr[id] + i;
+      for (int i = 0; i < 6; ++i) dof_[std::size_t(i)] = m_->jnt_dofadr[id] + i;
+    }
     for (std::size_t j = 0; j < r.joints.size(); ++j) {
       if (t.coordinate[j] < 0) continue;
       const int id = mj_name2id(m_.get(), mjOBJ_JOINT, r.joints[j].name.c_str());
       if (id < 0) throw robot_refused("mujoco: the model has no joint " + r.joints[j].name);
-      qpos_[t.coordinate[j]] = m_->jnt_qposadr[id];
-      dof_[t.coordinate[j]] = m_->jnt_dofadr[id];
+      qpos_[std::size_t(t.coordinate[j] + (floating_ ? 7 : 0))] = m_->jnt_qposadr[id];
+      dof_[std::size_t(t.coordinate[j] + base)] = m_->jnt_dofadr[id];
     }
   }
 
   std::optional<robots::robot> held_robot() const override {
-    std::vector<int> dofs(static_cast<std::size_t>(n_));
-    for (const auto& [coordinate, dof] : dof_) dofs[std::size_t(coordinate)] = dof;
+    const std::vector<int> dofs(dof_.begin() + (floating_ ? 6 : 0), dof_.end());
     return robot_of(m_.get(), dofs);
   }
 
   std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override {
-    set(q, Eigen::VectorXd::Zero(n_));
+    set(q, Eigen::VectorXd::Zero(nv()));
     mj_forward(m_.get(), d_.get());
-    std::vector<mjtNum> dense(std::size_t(m_->nv) * std::size_t(m_->nv));
-    mj_fullM(m_.get(), dense.data(), d_->qM);
-    Eigen::MatrixXd out(n_, n_);
-    for (int i = 0; i < n_; ++i)
-      for (int j = 0; j < n_; ++j) out(i, j) = dense[std::size_t(dof_.at(i) * m_->nv + dof_.at(j))];
-    return out;
+    return full_mass_matrix();
   }
   std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) override {
     set(q, qdot);
@@ -184,38 +211,50 @@ class mujoco_model final : public dynamics_model {
     // which mj_inverse and mj_forward count and qfrc_bias does not.
     Eigen::VectorXd h = read(d_->qfrc_bias);
     h -= read(d_->qfrc_passive);
-    return h;
+    return frame_.bias_from_library(h, full_mass_matrix());
   }
   std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                                          const Eigen::VectorXd& qddot) override {
     set(q, qdot);
-    for (int i = 0; i < n_; ++i) d_->qacc[dof_.at(i)] = qddot(i);
+    const Eigen::VectorXd qacc = frame_.acceleration_to_library(qddot);
+    for (int i = 0; i < nv(); ++i) d_->qacc[dof_[std::size_t(i)]] = qacc(i);
     mj_inverse(m_.get(), d_.get());
-    return read(d_->qfrc_inverse);
+    return frame_.from_library(read(d_->qfrc_inverse));
   }
   std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                                          const Eigen::VectorXd& tau) override {
     set(q, qdot);
-    for (int i = 0; i < n_; ++i) d_->qfrc_applied[dof_.at(i)] = tau(i);
+    const Eigen::VectorXd applied = frame_.to_library(tau);
+    for (int i = 0; i < nv(); ++i) d_->qfrc_applied[dof_[std::size_t(i)]] = applied(i);
     mj_forward(m_.get(), d_.get());
-    return read(d_->qacc);
+    return frame_.acceleration_from_library(read(d_->qacc));
   }
 
  private:
+  int nv() const { return static_cast<int>(dof_.size()); }
   /// The state, and nothing of an earlier call left: the applied forces, the accelerations
   /// and the warnings cleared (mj_resetData would clear the whole arena, about 0.25 ms a call).
-  void set(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) {
+  void set(const Eigen::VectorXd& q, const Eigen::VectorXd& u) {
     mju_zero(d_->qfrc_applied, m_->nv);
     mju_zero(d_->qacc, m_->nv);
     for (auto& w : d_->warning) w.number = 0;
-    for (int i = 0; i < n_; ++i) {
-      d_->qpos[qpos_.at(i)] = q(i);
-      d_->qvel[dof_.at(i)] = qdot(i);
-    }
+    for (std::size_t i = 0; i < qpos_.size(); ++i) d_->qpos[qpos_[i]] = q(Eigen::Index(i));
+    frame_ = floating_ ? base_map(freejoint_velocity, base_rotation(q), u) : base_map();
+    const Eigen::VectorXd qvel = frame_.to_library(u);
+    for (int i = 0; i < nv(); ++i) d_->qvel[dof_[std::size_t(i)]] = qvel(i);
+  }
+  /// M in the state's layout: T^T M_mj T (base_map).
+  Eigen::MatrixXd full_mass_matrix() const {
+    std::vector<mjtNum> dense(std::size_t(m_->nv) * std::size_t(m_->nv));
+    mj_fullM(m_.get(), dense.data(), d_->qM);
+    Eigen::MatrixXd out(nv(), nv());
+    for (int i = 0; i < nv(); ++i)
+      for (int j = 0; j < nv(); ++j) out(i, j) = dense[std::size_t(dof_[std::size_t(i)] * m_->nv + dof_[std::size_t(j)])];
+    return frame_.from_library(out);
   }
   Eigen::VectorXd read(const mjtNum* x) const {
-    Eigen::VectorXd out(n_);
-    for (int i = 0; i < n_; ++i) out(i) = x[dof_.at(i)];
+    Eigen::VectorXd out(nv());
+    for (int i = 0; i < nv(); ++i) out(i) = x[dof_[std::size_t(i)]];
     if (d_->warning[mjWARN_BADQACC].number > 0) throw error("mujoco: a bad acceleration (mjWARN_BADQACC)");
     return out;
   }
@@ -228,7 +267,11 @@ class mujoco_model final : public dynamics_model {
   std::unique_ptr<mjModel, model_deleter> m_;
   std::unique_ptr<mjData, data_deleter> d_;
   int n_ = 0;
-  std::map<int, int> qpos_, dof_;
+  bool floating_ = false;
+  base_map frame_;  ///< the freejoint's velocity convention at the state's base rotation
+  /// The state's components at MuJoCo's: qpos_[i] the qpos address of q(i), dof_[i] the qvel
+  /// (and force, acceleration) address of u(i).
+  std::vector<int> qpos_, dof_;
 };
 }  // namespace
 
@@ -239,6 +282,12 @@ const char* const conventions =
     "inertia about the centre of mass (body_ipos); a joint's armature (added to M's diagonal) and damping "
     "(qfrc_passive = -damping qvel, counted in h as qfrc_bias - qfrc_passive) as the robot gives them; no "
     "friction loss (a constraint of MuJoCo's, not held here) and no spring";
+
+/// The floating base through the freejoint's convention (freejoint_velocity above).
+const char* const freejoint =
+    "; a floating base as a body with a freejoint (qpos: position, then quaternion w x y z, as the state's; qvel: the "
+    "linear velocity in the world, R v_b, and the angular one in the body, w_b; qacc their rates, so that qacc's "
+    "linear part is R (vdot_b + w_b x v_b); forces and M through the same map)";
 
 dynamics_library library(std::string name, std::string origin, std::function<std::string(const robots::robot&)> model) {
   dynamics_library l;
@@ -259,11 +308,13 @@ dynamics_library dynamics() {
                  "fullinertia, hinge and slide joints, no limits or geoms)",
                  robot_mjcf);
   l.sets_armature = true;
+  l.origin += freejoint;
+  l.no_floating_base.clear();
   return l;
 }
 
 dynamics_library urdf_dynamics() {
-  return library("mujoco-urdf",
+  dynamics_library l = library("mujoco-urdf",
                  "the same functions on the model MuJoCo's own URDF import builds (mj_loadXML of the robot's URDF, "
                  "whose joint limits of +-1e9 are never reached; gravity set on mjModel::opt; its <dynamics "
                  "damping> read as the joint's damping, and friction left out of the file: the import makes it a "
@@ -273,6 +324,8 @@ dynamics_library urdf_dynamics() {
                    for (robots::joint& j : without_friction.joints) j.friction = 0;
                    return to_urdf(without_friction);
                  });
+  l.no_floating_base = "its adapter writes no floating joint for MuJoCo's URDF import";
+  return l;
 }
 
 }  // namespace mechcheck::audit::mujoco

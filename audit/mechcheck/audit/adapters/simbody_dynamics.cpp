@@ -47,6 +47,7 @@ simbody_bridge::robot_setup setup_of(const robots::robot& r, const robots::tree&
     s.bodies.push_back(b);
   };
   add(t.root, -1, nullptr);
+  if (r.floating) s.bodies.front().joint = 3;  // a Free mobilizer from the ground
   for (const int k : t.order) {
     add(t.child_link[std::size_t(k)], body_of[std::size_t(t.parent_link[std::size_t(k)])], &r.joints[std::size_t(k)]);
     if (t.coordinate[std::size_t(k)] >= 0) coordinates.order.push_back(t.coordinate[std::size_t(k)]);
@@ -55,9 +56,14 @@ simbody_bridge::robot_setup setup_of(const robots::robot& r, const robots::tree&
 }
 
 namespace {
+/// Simbody's Free mobilizer against the state's floating base: its u are the angular velocity
+/// then the linear one, both in the ground's frame (MobilizedBody_Free.h: w_FM and v_FM
+/// expressed in F, F the ground's frame and M the root's), base_map.
+constexpr base_convention free_velocity{true, true, true};
+
 class model final : public dynamics_model {
  public:
-  explicit model(const robots::robot& r) {
+  explicit model(const robots::robot& r) : floating_(r.floating) {
     const robots::tree t = robots::validate(r);
     const bridge::robot_setup s = setup_of(r, t, coordinates_);
     n_ = t.dofs;
@@ -66,35 +72,40 @@ class model final : public dynamics_model {
     } catch (const std::exception& e) {
       throw robot_refused("simbody: " + one_line(e.what()));
     }
-    if (d_->size() != n_)
-      throw error("simbody: the system has " + std::to_string(d_->size()) + " mobilities, the robot " + std::to_string(n_));
+    if (d_->size() != n_ + base())
+      throw error("simbody: the system has " + std::to_string(d_->size()) + " mobilities, the robot " +
+                  std::to_string(n_ + base()));
   }
   std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override {
-    const Eigen::VectorXd qs = in(q);
-    Eigen::MatrixXd m(n_, n_);
+    const Eigen::VectorXd qs = positions(q);
+    const int nu = n_ + base();
+    Eigen::MatrixXd m(nu, nu);
     guarded("calcM", [&] { d_->mass_matrix(qs.data(), m.data()); });
     m.transposeInPlace();  // the bridge writes row-major; Eigen's default is column-major
-    return coordinates_.from_library(m);
+    return frame(q, Eigen::VectorXd::Zero(nu)).from_library(out(m));
   }
   std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) override {
-    const Eigen::VectorXd qs = in(q), us = in(qdot);
-    Eigen::VectorXd h(n_);
+    const base_map f = frame(q, qdot);
+    const Eigen::VectorXd qs = positions(q), us = in(f.to_library(qdot));
+    Eigen::VectorXd h(n_ + base());
     guarded("calcResidualForceIgnoringConstraints", [&] { d_->bias(qs.data(), us.data(), h.data()); });
-    return out(h);
+    return f.bias_from_library(out(h), floating_ ? *mass_matrix(q) : Eigen::MatrixXd());
   }
   std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                                          const Eigen::VectorXd& qddot) override {
-    const Eigen::VectorXd qs = in(q), us = in(qdot), a = in(qddot);
-    Eigen::VectorXd tau(n_);
+    const base_map f = frame(q, qdot);
+    const Eigen::VectorXd qs = positions(q), us = in(f.to_library(qdot)), a = in(f.acceleration_to_library(qddot));
+    Eigen::VectorXd tau(n_ + base());
     guarded("calcResidualForceIgnoringConstraints", [&] { d_->inverse(qs.data(), us.data(), a.data(), tau.data()); });
-    return out(tau);
+    return f.from_library(out(tau));
   }
   std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                                          const Eigen::VectorXd& tau) override {
-    const Eigen::VectorXd qs = in(q), us = in(qdot), f = in(tau);
-    Eigen::VectorXd a(n_);
-    guarded("calcAccelerationIgnoringConstraints", [&] { d_->forward(qs.data(), us.data(), f.data(), a.data()); });
-    return out(a);
+    const base_map f = frame(q, qdot);
+    const Eigen::VectorXd qs = positions(q), us = in(f.to_library(qdot)), force = in(f.to_library(tau));
+    Eigen::VectorXd a(n_ + base());
+    guarded("calcAccelerationIgnoringConstraints", [&] { d_->forward(qs.data(), us.data(), force.data(), a.data()); });
+    return f.acceleration_from_library(out(a));
   }
 
  private:
@@ -111,13 +122,42 @@ class model final : public dynamics_model {
       throw error(std::string("simbody: ") + what + ": " + one_line(e.what()));
     }
   }
-  /// Coordinates in the bridge's order (the moving bodies') from the robot's, and back.
-  Eigen::VectorXd in(const Eigen::VectorXd& x) const { return coordinates_.to_library(x); }
-  Eigen::VectorXd out(const Eigen::VectorXd& x) const { return coordinates_.from_library(x); }
+  int base() const { return floating_ ? 6 : 0; }
+  base_map frame(const Eigen::VectorXd& q, const Eigen::VectorXd& u) const {
+    return floating_ ? base_map(free_velocity, base_rotation(q), u) : base_map();
+  }
+  /// q in the bridge's order: a floating base's pose first as it is, then the joints'.
+  Eigen::VectorXd positions(const Eigen::VectorXd& q) const {
+    if (!floating_) return coordinates_.to_library(q);
+    Eigen::VectorXd out(q.size());
+    out << q.head<7>(), coordinates_.to_library(Eigen::VectorXd(q.tail(n_)));
+    return out;
+  }
+  /// Mobilities in the bridge's order (a floating base's six first, in Simbody's layout),
+  /// from the robot's, and back.
+  Eigen::VectorXd in(const Eigen::VectorXd& x) const {
+    if (!floating_) return coordinates_.to_library(x);
+    Eigen::VectorXd y(x.size());
+    y << x.head<6>(), coordinates_.to_library(Eigen::VectorXd(x.tail(n_)));
+    return y;
+  }
+  Eigen::VectorXd out(const Eigen::VectorXd& y) const {
+    if (!floating_) return coordinates_.from_library(y);
+    Eigen::VectorXd x(y.size());
+    x << y.head<6>(), coordinates_.from_library(Eigen::VectorXd(y.tail(n_)));
+    return x;
+  }
+  Eigen::MatrixXd out(const Eigen::MatrixXd& m) const {
+    coordinate_order all;
+    for (int i = 0; i < base(); ++i) all.order.push_back(i);
+    for (const int c : coordinates_.order) all.order.push_back(c + base());
+    return all.from_library(m);
+  }
 
   std::unique_ptr<bridge::robot_dynamics> d_;
-  coordinate_order coordinates_;  ///< the bridge's moving bodies
+  coordinate_order coordinates_;  ///< the bridge's moving joints
   int n_ = 0;
+  bool floating_ = false;
 };
 }  // namespace
 
@@ -132,7 +172,11 @@ dynamics_library dynamics() {
              "MassProperties about its origin (the central inertia R_o I R_o^T shifted by "
              "Inertia::shiftFromMassCenter), a MobilizedBody::Pin or Slider whose frames F (at the joint's "
              "origin) and M turn z (Pin) or x (Slider) onto the axis, a Weld for a fixed joint and the root; u = "
-             "qdot for both mobilizers";
+             "qdot for both mobilizers; a floating root on a MobilizedBody::Free from the ground (its q set by "
+             "setQToFitTransform of the base's pose; its u the angular then the linear velocity, both in the "
+             "ground's frame, R w_b and R v_b, their rates R wdot_b and R (vdot_b + w_b x v_b); forces and M "
+             "through the same map)";
+  l.no_floating_base.clear();
   l.load = [](const robots::robot& r) -> std::unique_ptr<dynamics_model> { return std::make_unique<model>(r); };
   return l;
 }

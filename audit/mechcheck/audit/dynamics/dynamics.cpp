@@ -9,10 +9,12 @@
 #include <tuple>
 
 #include <Eigen/Cholesky>
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 
 #include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/robots/dynamics.hpp"
+#include "mechcheck/robots/floating.hpp"
 #include "mechcheck/robots/recursive.hpp"
 
 namespace mechcheck::audit {
@@ -115,6 +117,61 @@ dynamics_residual residual_of(dynamics_quantity quantity, const Eigen::MatrixXd&
 }
 }  // namespace
 
+base_map::base_map(const base_convention& c, const Eigen::Matrix3d& rotation, const Eigen::VectorXd& u)
+    : floating_(true), c_(c), r_(rotation), turn_(Eigen::VectorXd::Zero(u.size())) {
+  if (u.size() < 6) throw dimension_error("base_map: u has " + std::to_string(u.size()) + " components, fewer than the base's 6");
+  if (c.linear_in_world) turn_.head<3>() = Eigen::Vector3d(u.segment<3>(3)).cross(Eigen::Vector3d(u.head<3>()));
+}
+
+Eigen::VectorXd base_map::to_library(const Eigen::VectorXd& x) const {
+  if (!floating_) return x;
+  Eigen::VectorXd y = x;
+  const Eigen::Vector3d v = c_.linear_in_world ? Eigen::Vector3d(r_ * x.head<3>()) : Eigen::Vector3d(x.head<3>());
+  const Eigen::Vector3d w = c_.angular_in_world ? Eigen::Vector3d(r_ * x.segment<3>(3)) : Eigen::Vector3d(x.segment<3>(3));
+  y.head<3>() = c_.angular_first ? w : v;
+  y.segment<3>(3) = c_.angular_first ? v : w;
+  return y;
+}
+
+Eigen::VectorXd base_map::from_library(const Eigen::VectorXd& y) const {
+  if (!floating_) return y;
+  Eigen::VectorXd x = y;
+  const Eigen::Vector3d v = c_.angular_first ? y.segment<3>(3) : y.head<3>();
+  const Eigen::Vector3d w = c_.angular_first ? y.head<3>() : y.segment<3>(3);
+  x.head<3>() = c_.linear_in_world ? Eigen::Vector3d(r_.transpose() * v) : v;
+  x.segment<3>(3) = c_.angular_in_world ? Eigen::Vector3d(r_.transpose() * w) : w;
+  return x;
+}
+
+Eigen::MatrixXd base_map::from_library(const Eigen::MatrixXd& m) const {
+  if (!floating_) return m;
+  Eigen::MatrixXd t(m.rows(), m.cols());  // T^T m T, a column and a row at a time
+  for (Eigen::Index j = 0; j < m.cols(); ++j) t.col(j) = from_library(Eigen::VectorXd(m.col(j)));
+  Eigen::MatrixXd out(m.rows(), m.cols());
+  for (Eigen::Index i = 0; i < m.rows(); ++i) out.row(i) = from_library(Eigen::VectorXd(t.row(i).transpose())).transpose();
+  return out;
+}
+
+Eigen::VectorXd base_map::bias_from_library(const Eigen::VectorXd& h, const Eigen::MatrixXd& m) const {
+  if (!floating_) return h;
+  return from_library(h) + m * turn_;
+}
+
+Eigen::VectorXd base_map::acceleration_to_library(const Eigen::VectorXd& udot) const {
+  if (!floating_) return udot;
+  return to_library(Eigen::VectorXd(udot + turn_));
+}
+
+Eigen::VectorXd base_map::acceleration_from_library(const Eigen::VectorXd& a) const {
+  if (!floating_) return a;
+  return from_library(a) - turn_;
+}
+
+Eigen::Matrix3d base_rotation(const Eigen::VectorXd& q) {
+  if (q.size() < 7) throw dimension_error("base_rotation: q has " + std::to_string(q.size()) + " components, fewer than the base's 7");
+  return Eigen::Quaterniond(q(3), q(4), q(5), q(6)).normalized().toRotationMatrix();
+}
+
 std::string unset_joint_terms(const robots::robot& robot, const std::string& library, bool sets_armature,
                               bool sets_damping) {
   for (const robots::joint& j : robot.joints) {
@@ -131,6 +188,8 @@ std::string unset_joint_terms(const robots::robot& robot, const std::string& lib
 dynamics_check check_dynamics(const dynamics_library& library, const robots::robot& robot, const dynamics_state& x) {
   dynamics_check out;
   out.refused = unset_joint_terms(robot, library.name, library.sets_armature, library.sets_damping);
+  if (out.refused.empty() && robot.floating && !library.no_floating_base.empty())
+    out.refused = library.name + ": " + library.no_floating_base;
   if (!out.refused.empty()) return out;
   std::unique_ptr<dynamics_model> model;
   try {
@@ -152,6 +211,11 @@ dynamics_check check_dynamics(const dynamics_library& library, const robots::rob
                         " and " + to_text(j.damping);
           return out;
         }
+  if (held && held->floating != robot.floating) {
+    out.refused = library.name + " holds the robot's base " + (held->floating ? "floating" : "fixed") +
+                  " where the robot gives it " + (robot.floating ? "floating" : "fixed");
+    return out;
+  }
   const exact_terms e = exact_remembered(held ? *held : robot, x);
   if (held) {
     const exact_terms given = exact_remembered(robot, x);
@@ -170,39 +234,72 @@ dynamics_check check_dynamics(const dynamics_library& library, const robots::rob
   return out;
 }
 
+namespace {
+/// A floating robot's base pose from q's head (dynamics_state), the quaternion normalized in
+/// mpfr50.
+robots::base_pose<mpfr50> floating_base_pose(const Eigen::VectorXd& q) {
+  if (q.size() < 7) throw dimension_error("floating_base_pose: q has " + std::to_string(q.size()) + " components, fewer than the base's 7");
+  require_finite_vector(q, "floating_base_pose", "q");
+  const Eigen::Quaternion<mpfr50> r(mpfr50(q(3)), mpfr50(q(4)), mpfr50(q(5)), mpfr50(q(6)));
+  if (!(r.squaredNorm() > 0)) throw domain_error("floating_base_pose: the base's quaternion is zero");
+  return {r.normalized().toRotationMatrix(), vector3<mpfr50>(mpfr50(q(0)), mpfr50(q(1)), mpfr50(q(2)))};
+}
+}  // namespace
+
 reference_terms reference_terms_at(const robots::robot& robot, const dynamics_state& x) {
   const robots::robot_model<mpfr50> m(robot);
-  const int n = m.dofs();
-  for (const auto* v : {&x.q, &x.qdot, &x.qddot, &x.tau})
-    if (v->size() != n)
-      throw dimension_error("check_dynamics: robot " + robot.name + " has " + std::to_string(n) +
-                            " coordinates, a state vector has " + std::to_string(v->size()));
-  const dynamic_vector<mpfr50> q = widened<mpfr50>(x.q), qdot = widened<mpfr50>(x.qdot);
+  const int n = m.dofs(), base = robot.floating ? 6 : 0, nq = n + (robot.floating ? 7 : 0);
+  for (const auto& [v, size] : {std::pair{&x.q, nq}, std::pair{&x.qdot, n + base}, std::pair{&x.qddot, n + base},
+                                std::pair{&x.tau, n + base}})
+    if (v->size() != size)
+      throw dimension_error("check_dynamics: robot " + robot.name + (robot.floating ? " on a floating base" : "") +
+                            " has " + std::to_string(nq) + " coordinates and " + std::to_string(n + base) +
+                            " velocities, a state vector has " + std::to_string(v->size()));
+  const dynamic_vector<mpfr50> qdot = widened<mpfr50>(x.qdot), rest = dynamic_vector<mpfr50>::Zero(n + base);
+  const Eigen::VectorXd joints = x.q.tail(n);
+  const dynamic_vector<mpfr50> q = widened<mpfr50>(joints);
   // The Lagrangian's M and h, computed by composite rigid bodies and Newton-Euler
-  // (robots/recursive.hpp: held to the nested AD of L within a few eps in every tier by
-  // robots.recursive_dynamics), at a cost that grows like n depth instead of L's n^3.
+  // (robots/recursive.hpp and floating.hpp: held to the nested AD of L within a few eps in
+  // every tier by robots.recursive_dynamics and robots.floating_base_dynamics), at a cost that
+  // grows like n depth instead of L's n^3.
   reference_terms out;
-  out.mass = robots::recursive_mass_matrix(m, q);
-  out.bias = robots::recursive_bias(m, q, qdot);
+  dynamic_vector<mpfr50> gravity_terms;
+  if (robot.floating) {
+    const robots::base_pose<mpfr50> b = floating_base_pose(x.q);
+    out.mass = robots::floating_recursive_mass_matrix(m, b, q);
+    out.bias = robots::floating_recursive_bias(m, b, q, qdot);
+    gravity_terms = robots::floating_recursive_bias(m, b, q, rest);
+  } else {
+    out.mass = robots::recursive_mass_matrix(m, q);
+    out.bias = robots::recursive_bias(m, q, qdot);
+    gravity_terms = robots::recursive_bias(m, q, rest);
+  }
   out.tau = out.mass * widened<mpfr50>(x.qddot) + out.bias;
   const Eigen::LLT<dynamic_matrix<mpfr50>> llt(out.mass);
   if (llt.info() != Eigen::Success)
     throw singular_error("check_dynamics: robot " + robot.name + ": its mass matrix is not positive definite");
   const dynamic_vector<mpfr50> rhs = widened<mpfr50>(x.tau) - out.bias;
   out.qddot = llt.solve(rhs);
-  // The scales, from the values rounded to double (a magnitude needs no more).
+  // The scales, from the values rounded to double (a magnitude needs no more). A floating
+  // base's levers are from the world's origin, as robots.floating_base_dynamics takes them: a
+  // library computes the links' places in the world (MuJoCo's and Simbody's spatial
+  // quantities are world-frame), and each carries the rounding of |p|.
   const Eigen::MatrixXd mass = narrowed(out.mass), bias = narrowed(out.bias), qddot = narrowed(out.qddot);
-  const Eigen::MatrixXd gravity =
-      narrowed(robots::recursive_bias(m, q, dynamic_vector<mpfr50>(dynamic_vector<mpfr50>::Zero(n))));
-  const robots::term_scale terms = robots::term_scales(m, x.q);
+  const Eigen::MatrixXd gravity = narrowed(gravity_terms);
+  const robots::term_scale terms = robots::term_scales(m, joints, robot.floating ? x.q.head<3>().norm() : 0.0);
   const double m_max = std::max(max_abs(mass), terms.inertia), v = max_abs(x.qdot), a = max_abs(x.qddot);
   out.scale_m = m_max;
   out.scale_h = std::max({max_abs(gravity), terms.gravity, max_abs(Eigen::MatrixXd(bias - gravity)), m_max * v * v});
   out.scale_tau = std::max(out.scale_h, m_max * a);
-  const Eigen::MatrixXd inv = n ? Eigen::MatrixXd(mass.inverse()) : Eigen::MatrixXd();
-  const double cond = max_row_sum(mass) * max_row_sum(inv);
-  out.scale_forward = cond * max_abs(qddot) + max_row_sum(inv) * std::max(out.scale_h, max_abs(x.tau));
-  out.moving_links = n;
+  const Eigen::MatrixXd inv = n + base ? Eigen::MatrixXd(mass.inverse()) : Eigen::MatrixXd();
+  // qddot = M^-1 (tau - h) with M's error relative to its terms (I, which a moment about an
+  // axis can cancel to far less: an inertia of entries near 1 with 0.06 about the axis) and
+  // h's to its own: |M^-1| (max(|M|, I) |qddot| + max(scale of h, |tau|)), the solve's backward
+  // error in the first term.
+  const double m_terms = std::max(max_row_sum(mass), terms.inertia);
+  out.scale_forward = max_row_sum(inv) * (m_terms * max_abs(qddot) + std::max(out.scale_h, max_abs(x.tau)));
+  // The base is one more level of the recursion: its six motions pass through every link.
+  out.moving_links = n + (robot.floating ? 1 : 0);
   return out;
 }
 

@@ -12,8 +12,9 @@
 ///   M        max(|M|, I);
 ///   h        max(|g|, G, |h - g|, max(|M|, I) |qdot|^2);
 ///   tau      max(scale of h, max(|M|, I) |qddot|);
-///   qddot    cond(M) |qddot| + |M^-1| max(scale of h, |tau|)  (the solve's backward error
-///            amplified by cond(M), and the error of tau - h through M^-1);
+///   qddot    |M^-1| (max(|M|, I) |qddot| + max(scale of h, |tau|))  (M's error, relative
+///            to its terms, and the solve's backward error, amplified by M^-1 as cond(M) does
+///            where no moment cancels; and the error of tau - h through M^-1);
 /// all norms the largest component. The budget is 16 n eps scale for a robot of n moving
 /// links: a recursive algorithm passes through n levels, each a handful of 3x3 rotations
 /// and 3-term dot products (about 16 roundings of the scale). A residual above the budget is
@@ -32,6 +33,7 @@
 
 #include "mechcheck/audit/result.hpp"
 #include "mechcheck/core.hpp"
+#include "mechcheck/harness/generators.hpp"
 #include "mechcheck/robots/robot.hpp"
 
 namespace mechcheck::audit {
@@ -85,6 +87,9 @@ struct dynamics_library {
   /// nonzero armature or damping where the adapter sets none is refused by name, never held
   /// to a reference the library was not given.
   bool sets_armature = false, sets_damping = false;
+  /// Why the library, or its adapter, takes no robot on a floating base; empty where it takes
+  /// them (through its own convention for the base's coordinates, which its origin names).
+  std::string no_floating_base = "its adapter builds robots fixed to the world only";
 };
 
 /// A library's order of the robot's coordinates, for its adapter: order[i] is the robot's
@@ -113,7 +118,54 @@ struct coordinate_order {
   }
 };
 
-/// A robot's state for every quantity.
+/// A library's convention for a floating base's velocity: which part of the base's twist
+/// comes first, and whether each is in the world's frame or the base's.
+struct base_convention {
+  bool angular_first = false;
+  bool linear_in_world = false, angular_in_world = false;
+};
+
+/// The state's u = (v_b; w_b; qdot) against a library's base convention at the base's
+/// rotation R: u_lib = T u, with T orthogonal (a rotation of each part and their order), so
+/// that forces map alike (Q_lib = T Q keeps the power) and M = T^T M_lib T. The rates differ
+/// by the turn of a linear velocity taken in the world: d/dt (R v_b) = R (vdot_b + w_b x v_b),
+/// so udot_lib = T (udot + turn) with turn = (w_b x v_b; 0) (zero otherwise; R w_b's rate is
+/// R wdot_b), and h = T^T h_lib + M turn. A fixed base: T the identity.
+class base_map {
+ public:
+  base_map() = default;  ///< a fixed base
+  base_map(const base_convention& c, const Eigen::Matrix3d& rotation, const Eigen::VectorXd& u);
+  Eigen::VectorXd to_library(const Eigen::VectorXd& x) const;    ///< T x (a velocity, a force)
+  Eigen::VectorXd from_library(const Eigen::VectorXd& y) const;  ///< T^T y
+  Eigen::MatrixXd from_library(const Eigen::MatrixXd& m) const;  ///< T^T m T (M)
+  /// h = T^T h_lib + M turn, with M in the state's layout.
+  Eigen::VectorXd bias_from_library(const Eigen::VectorXd& h, const Eigen::MatrixXd& m) const;
+  Eigen::VectorXd acceleration_to_library(const Eigen::VectorXd& udot) const;  ///< T (udot + turn)
+  Eigen::VectorXd acceleration_from_library(const Eigen::VectorXd& a) const;   ///< T^T a - turn
+
+ private:
+  bool floating_ = false;
+  base_convention c_;
+  Eigen::Matrix3d r_ = Eigen::Matrix3d::Identity();
+  Eigen::VectorXd turn_;
+};
+
+/// The base's rotation of a floating robot's q (dynamics_state's layout), the quaternion
+/// normalized in double, as a library given q is.
+Eigen::Matrix3d base_rotation(const Eigen::VectorXd& q);
+
+/// A robot's state for every quantity. On a fixed base: q, qdot, qddot and tau of its moving
+/// joints. On a floating base (robots::robot::floating; robots/floating.hpp), MuJoCo's
+/// freejoint layout for the pose and the body twist for the velocity:
+///   q     = (p; quaternion w x y z; the joints' q): the base's origin in the world and its
+///           orientation (normalized where used), 7 + n;
+///   qdot  = u = (v_b; w_b; the joints' qdot): the base's twist in its own frame, 6 + n;
+///   qddot = udot, the rate of u's components;
+///   tau   = Q = (f_b; n_b; the joints' tau): the wrench on the base in its frame, the moment
+///           about its origin,
+/// so that M udot + h = Q and Q . u is the forces' power. A library whose convention differs
+/// (the base's linear velocity in the world, the angular part first) is read through it by
+/// its adapter, which says how in the library's origin.
 struct dynamics_state {
   Eigen::VectorXd q, qdot, qddot, tau;
 };
@@ -163,6 +215,15 @@ struct reference_terms {
   int moving_links = 0;
 };
 reference_terms reference_terms_at(const robots::robot& robot, const dynamics_state& state);
+
+/// A generated robot's state (generators::robot_case) as a dynamics_state.
+dynamics_state state_of(const generators::robot_case& c);
+
+/// The campaigns' random robots: fixed and floating bases alike, a draw that shrinks towards
+/// the fixed one; a floating robot is floating_robot_cases' (its root given a body; the base's
+/// pose, twist, twist rate and wrench) with its state in dynamics_state's layout, the
+/// quaternion of the base's roll, pitch and yaw rounded to double.
+rc::Gen<generators::robot_case> dynamics_robot_cases(int max_links);
 
 /// How a campaign checks one robot at one state (check_dynamics for a dynamics_library).
 using dynamics_checker = std::function<dynamics_check(const robots::robot&, const dynamics_state&)>;

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 #include <rapidcheck.h>
 
@@ -13,10 +14,10 @@
 #include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/audit/report.hpp"
 #include "mechcheck/harness/generators.hpp"
+#include "mechcheck/robots/dynamics.hpp"
 
 namespace mechcheck::audit {
 
-namespace {
 dynamics_state state_of(const generators::robot_case& c) {
   dynamics_state x;
   x.q = generators::to_tier<double>(c.q);
@@ -24,6 +25,23 @@ dynamics_state state_of(const generators::robot_case& c) {
   x.qddot = generators::to_tier<double>(c.qddot);
   x.tau = generators::to_tier<double>(c.tau);
   return x;
+}
+
+namespace {
+
+/// The robot of `c` on a floating base, in dynamics_state's layout: q = (p; quaternion w x y z
+/// of the base's rpy, rounded to double; the joints'), and the base's twist, its rate and
+/// wrench ahead of the joints' rates, accelerations and torques.
+generators::robot_case floated(const generators::floating_robot_case& f) {
+  generators::robot_case c = f.joints;
+  c.robot.floating = true;
+  const Eigen::Quaterniond r(robots::rpy_rotation<double>(f.base.rpy));
+  std::vector<double> q{f.base.xyz(0), f.base.xyz(1), f.base.xyz(2), r.w(), r.x(), r.y(), r.z()};
+  q.insert(q.end(), c.q.begin(), c.q.end());
+  c.q = q;
+  for (const auto& [head, v] : {std::pair{&f.twist, &c.qdot}, std::pair{&f.twist_rate, &c.qddot}, std::pair{&f.wrench, &c.tau}})
+    v->insert(v->begin(), head->begin(), head->end());
+  return c;
 }
 
 std::string vector_text(const Eigen::MatrixXd& m) {
@@ -128,7 +146,9 @@ dynamics_campaign run_dynamics_checker(const std::string& name, const std::strin
     if (opt.max_links < 1 || opt.max_links > 32)
       throw domain_error("run_dynamics: max_links must be in 1..32, got " + std::to_string(opt.max_links));
     const int links = opt.max_links;
-    return campaign(name, origin, check, opt, [links] { return *generators::robot_cases(links); }, selector);
+    // Fixed and floating bases alike (a draw that shrinks towards the fixed one).
+    const rc::Gen<generators::robot_case> cases = dynamics_robot_cases(links);
+    return campaign(name, origin, check, opt, [cases] { return *cases; }, selector);
   }
   const robots::tree t = robots::validate(*robot);
   dynamics_campaign c = campaign(name, origin, check, opt, [&] {
@@ -141,11 +161,28 @@ dynamics_campaign run_dynamics_checker(const std::string& name, const std::strin
       rc.qddot.push_back(*generators::dyadic_towards_zero(4));
       rc.tau.push_back(*generators::dyadic_towards_zero(4));
     }
-    return rc;
+    if (!robot->floating) return rc;
+    // The base's pose, twist, twist rate and wrench as floating_robot_cases draws them.
+    generators::floating_robot_case f;
+    f.joints = rc;
+    f.base.xyz = Eigen::Vector3d(*generators::dyadic_towards_zero(1), *generators::dyadic_towards_zero(1),
+                                 *generators::dyadic_towards_zero(1));
+    f.base.rpy = Eigen::Vector3d(*generators::dyadic_towards_zero(3.14), *generators::dyadic_towards_zero(3.14),
+                                 *generators::dyadic_towards_zero(3.14));
+    for (auto* v : {&f.twist, &f.twist_rate, &f.wrench})
+      for (int i = 0; i < 6; ++i) v->push_back(*generators::dyadic_towards_zero(4));
+    return floated(f);
   }, selector, robot);
   c.max_links = t.dofs;
   c.readings = robot->readings;
   return c;
+}
+
+rc::Gen<generators::robot_case> dynamics_robot_cases(int max_links) {
+  return rc::gen::exec([max_links] {
+    if (!*rc::gen::element(false, true)) return *generators::robot_cases(max_links);
+    return floated(*generators::floating_robot_cases(generators::robot_cases(max_links)));
+  });
 }
 
 namespace {

@@ -132,6 +132,8 @@ struct templated_dynamics {
   /// Whether Model sets a joint's armature and damping (robots::joint); a robot with one it
   /// does not set is refused (unset_joint_terms).
   bool sets_armature = false, sets_damping = false;
+  /// As dynamics_library's: empty where Model takes a floating base in dynamics_state's layout.
+  std::string no_floating_base = "its model takes robots fixed to the world only";
 
   template <class T>
   dynamics_check check(const robots::robot& robot, const dynamics_state& x) const {
@@ -140,6 +142,7 @@ struct templated_dynamics {
                   "templated_dynamics: Model<T> offers none of mass_matrix, bias, inverse, forward");
     dynamics_check out;
     out.refused = unset_joint_terms(robot, name, sets_armature, sets_damping);
+    if (out.refused.empty() && robot.floating && !no_floating_base.empty()) out.refused = name + ": " + no_floating_base;
     if (!out.refused.empty()) return out;
     std::optional<Model<T>> model;
     try {

@@ -151,6 +151,7 @@ robots::robot parse_urdf(const std::string& document, const std::string& origin)
     }
     r.links.push_back(std::move(l));
   }
+  std::vector<std::size_t> floating_joints;  // indices into r.joints
   for (const tinyxml2::XMLElement* e = top->FirstChildElement("joint"); e; e = e->NextSiblingElement("joint")) {
     robots::joint j;
     const char* name = e->Attribute("name");
@@ -166,8 +167,9 @@ robots::robot parse_urdf(const std::string& document, const std::string& origin)
     else if (t == "continuous") j.type = robots::joint_type::continuous;
     else if (t == "prismatic") j.type = robots::joint_type::prismatic;
     else if (t == "fixed") j.type = robots::joint_type::fixed;
-    else if (t == "floating" || t == "planar")
-      throw robot_error(what + ": type " + t + " is not modelled (revolute, continuous, prismatic, fixed)");
+    else if (t == "floating") floating_joints.push_back(r.joints.size());
+    else if (t == "planar")
+      throw robot_error(what + ": type " + t + " is not modelled (revolute, continuous, prismatic, fixed, floating)");
     else
       throw robot_error(what + ": unknown type \"" + t + "\"");
     for (const auto& [tag, target] : {std::pair{"parent", &j.parent}, std::pair{"child", &j.child}}) {
@@ -196,7 +198,7 @@ robots::robot parse_urdf(const std::string& document, const std::string& origin)
                                (n > 1 ? "+ " : "- ") + to_text(std::abs(n - 1)) + ") normalized to " +
                                robots::detail::vector_text(j.axis));
       }
-    } else if (j.type != robots::joint_type::fixed) {
+    } else if (j.type != robots::joint_type::fixed && t != "floating") {
       r.readings.push_back(what + ": no axis given: URDF's default (1, 0, 0)");
     }
     // URDF's <dynamics damping friction>, and armature= beside them: mechcheck's attribute for
@@ -213,6 +215,30 @@ robots::robot parse_urdf(const std::string& document, const std::string& origin)
                              "makes Coulomb friction a constraint of its own, or nothing");
     }
     r.joints.push_back(std::move(j));
+  }
+  // A floating base: one floating joint from a link that is nothing else (no <inertial>, no
+  // parent, no other joint; ROS's "world"), which is dropped with it. Its origin is the base's
+  // pose at the start, which the audit's states give instead.
+  if (floating_joints.size() > 1)
+    throw robot_error(who + ": joints " + r.joints[floating_joints[0]].name + " and " + r.joints[floating_joints[1]].name +
+                      " are both floating: a robot has one floating base");
+  if (floating_joints.size() == 1) {
+    const robots::joint f = r.joints[floating_joints[0]];
+    const std::string what = who + ": joint " + f.name + " (floating)";
+    const auto world = std::find_if(r.links.begin(), r.links.end(), [&](const robots::link& l) { return l.name == f.parent; });
+    if (world == r.links.end()) throw robot_error(what + ": its parent \"" + f.parent + "\" is not a link");
+    for (const robots::joint& j : r.joints)
+      if (&j != &r.joints[floating_joints[0]] && (j.child == f.parent || j.parent == f.parent))
+        throw robot_error(what + ": its parent link " + f.parent + " is joined to others (joint " + j.name +
+                          "): a floating joint joins the world, a link of nothing else, to the robot's root");
+    if (world->body)
+      throw robot_error(what + ": its parent link " + f.parent + " has an <inertial>: a floating joint's parent is the world");
+    if (f.origin.xyz != Eigen::Vector3d::Zero() || f.origin.rpy != Eigen::Vector3d::Zero())
+      r.readings.push_back(what + ": its origin is the base's pose at the start, which each state of the audit gives "
+                           "instead");
+    r.links.erase(world);
+    r.joints.erase(r.joints.begin() + std::ptrdiff_t(floating_joints[0]));
+    r.floating = true;
   }
   // Refuse here what the dynamics would: the messages name the file.
   try {
@@ -243,6 +269,12 @@ std::string to_urdf(const robots::robot& r) {
     o->SetAttribute("xyz", text(p.xyz).c_str());
     o->SetAttribute("rpy", text(p.rpy).c_str());
   };
+  // A floating base: the world as a link of its own, joined to the root by a floating joint.
+  std::string world = "world";
+  if (r.floating) {
+    while (std::any_of(r.links.begin(), r.links.end(), [&](const robots::link& l) { return l.name == world; })) world += "_";
+    top->InsertNewChildElement("link")->SetAttribute("name", world.c_str());
+  }
   for (const robots::link& l : r.links) {
     tinyxml2::XMLElement* e = top->InsertNewChildElement("link");
     e->SetAttribute("name", l.name.c_str());
@@ -258,6 +290,16 @@ std::string to_urdf(const robots::robot& r) {
     i->SetAttribute("iyy", text(m(1, 1)).c_str());
     i->SetAttribute("iyz", text(m(1, 2)).c_str());
     i->SetAttribute("izz", text(m(2, 2)).c_str());
+  }
+  if (r.floating) {
+    const std::string root = r.links[std::size_t(robots::validate(r).root)].name;
+    std::string name = root + "_floating";
+    while (std::any_of(r.joints.begin(), r.joints.end(), [&](const robots::joint& j) { return j.name == name; })) name += "_";
+    tinyxml2::XMLElement* e = top->InsertNewChildElement("joint");
+    e->SetAttribute("name", name.c_str());
+    e->SetAttribute("type", "floating");
+    e->InsertNewChildElement("parent")->SetAttribute("link", world.c_str());
+    e->InsertNewChildElement("child")->SetAttribute("link", root.c_str());
   }
   for (const robots::joint& j : r.joints) {
     tinyxml2::XMLElement* e = top->InsertNewChildElement("joint");

@@ -26,7 +26,7 @@ class refused : public std::runtime_error {
 struct robot_setup {
   struct body {
     int parent = -1;  ///< index into bodies; -1: Ground
-    int joint = 2;    ///< 0 a Pin (revolute), 1 a Slider (prismatic), 2 a Weld (fixed)
+    int joint = 2;    ///< 0 a Pin (revolute), 1 a Slider (prismatic), 2 a Weld (fixed), 3 Free (a floating root)
     double rotation[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  ///< the joint's origin in the parent, row-major
     double position[3] = {0, 0, 0};
     double axis[3] = {0, 0, 1};                        ///< unit, in the body's frame
@@ -135,7 +135,9 @@ class model {
 std::vector<SimTK::MobilizedBody> build_robot(const robot_setup& r, SimTK::SimbodyMatterSubsystem& matter);
 
 /// Simbody's equations of motion of a robot_setup: q, u, udot, tau and the rows and columns
-/// of M in the order of the moving bodies in `bodies` (u = qdot for a Pin and a Slider).
+/// of M in the order of the moving bodies in `bodies` (u = qdot for a Pin and a Slider). A
+/// Free root comes first: its q are the pose (position, quaternion w x y z, which
+/// setQToFitTransform takes), its six u Simbody's (w_FM, v_FM, both in the ground's frame).
 class robot_dynamics {
  public:
   explicit robot_dynamics(const robot_setup& r);  ///< throws std::exception (Simbody's)

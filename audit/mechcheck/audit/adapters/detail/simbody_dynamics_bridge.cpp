@@ -31,7 +31,10 @@ std::vector<MobilizedBody> build_robot(const robot_setup& r, SimbodyMatterSubsys
     MobilizedBody& parent = b.parent < 0 ? matter.updGround() : mobods[std::size_t(b.parent)];
     const Transform origin(Rotation(mat33(b.rotation)), vec3(b.position));
     const Body::Rigid info(mass_properties(b));
-    if (b.joint == 0 || b.joint == 1) {
+    if (b.joint == 3) {
+      mobods.push_back(MobilizedBody::Free(parent, Transform(), info, Transform()));
+      moving.push_back(mobods.back());
+    } else if (b.joint == 0 || b.joint == 1) {
       // The mobilizer's frames F (on the parent, at the joint's origin) and M (on the
       // body, at its origin) turned so that their z axis (Pin) or x axis (Slider) is the
       // joint's axis: X_PB = origin * R_a * motion(q) * R_a^T.
@@ -54,18 +57,30 @@ struct robot_dynamics::impl {
   GeneralForceSubsystem forces{system};
   std::vector<MobilizedBody> moving;  ///< in order
   Force::Gravity gravity;
-  std::vector<UIndex> u;              ///< per moving body
+  std::vector<UIndex> u;              ///< per mobility, in the moving bodies' order
+  bool free = false;                  ///< the first moving body is a Free root
   mutable State state;
 
   explicit impl(const robot_setup& r)
-      : moving(build_robot(r, matter)), gravity(forces, matter, vec3(r.gravity)) {
+      : moving(build_robot(r, matter)), gravity(forces, matter, vec3(r.gravity)),
+        free(!r.bodies.empty() && r.bodies.front().joint == 3) {
     state = system.realizeTopology();
-    for (const MobilizedBody& m : moving) u.push_back(m.getFirstUIndex(state));
+    for (const MobilizedBody& m : moving)
+      for (int i = 0; i < m.getNumU(state); ++i) u.push_back(UIndex(m.getFirstUIndex(state) + i));
   }
   void set(const double* qs, const double* us, Stage stage) const {
+    std::size_t at = 0, rate = 0;
     for (std::size_t k = 0; k < moving.size(); ++k) {
-      moving[k].setOneQ(state, 0, qs[k]);
-      moving[k].setOneU(state, 0, us ? us[k] : 0.0);
+      if (free && k == 0) {
+        const Rotation r(Quaternion(qs[3], qs[4], qs[5], qs[6]));
+        moving[k].setQToFitTransform(state, Transform(r, Vec3(qs[0], qs[1], qs[2])));
+        for (int i = 0; i < 6; ++i) moving[k].setOneU(state, i, us ? us[rate + std::size_t(i)] : 0.0);
+        at += 7, rate += 6;
+        continue;
+      }
+      moving[k].setOneQ(state, 0, qs[at++]);
+      moving[k].setOneU(state, 0, us ? us[rate] : 0.0);
+      ++rate;
     }
     system.realize(state, stage);
   }
