@@ -171,6 +171,7 @@ exec_dynamics_target exec_dynamics(const std::vector<std::string>& command, cons
   target.library.name = "exec::" + h.name;
   target.library.origin = served_by(h.origin, command);
   target.library.selector = "--exec-dynamics -- " + command_text(command);
+  target.library.no_floating_base = "the exec protocol's dynamics kind carries robots fixed to the world only";
   const std::vector<dynamics_quantity> offered = h.quantities;
   target.library.load = [s, offered](const robots::robot& robot) -> std::unique_ptr<dynamics_model> {
     return std::make_unique<exec_dynamics_model>(s, offered, robot);

@@ -248,6 +248,10 @@ struct dynamics_campaign {
     /// The largest residual among the robots of n moving joints, at index n - 1 (0 where
     /// none was checked): how the error grows with the tree, for the report's plot.
     std::vector<double> largest_by_joints;
+    /// Of those, the robots on a floating base and their largest residual (each within its
+    /// own budget, 16 (n + 1)).
+    int floating_checked = 0;
+    double floating_largest = 0;
   };
   std::vector<quantity_figure> figures;
   /// Where the library holds another robot than the one given: the largest

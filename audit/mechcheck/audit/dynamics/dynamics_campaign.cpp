@@ -99,6 +99,7 @@ dynamics_campaign campaign(const std::string& name, const std::string& origin, c
           if (f.quantity == r.quantity) {
             ++f.checked;
             if (r.residual >= f.largest) f.largest = r.residual, f.budget = r.budget;
+            if (rc.robot.floating) ++f.floating_checked, f.floating_largest = std::max(f.floating_largest, r.residual);
             if (joints == 0) continue;  // a robot without a moving joint: nothing to plot
             if (f.largest_by_joints.size() < joints) f.largest_by_joints.resize(joints, 0.0);
             double& by = f.largest_by_joints[joints - 1];
@@ -239,6 +240,20 @@ std::vector<std::string> readings_of(const std::vector<dynamics_campaign>& campa
 }
 }  // namespace
 
+namespace {
+/// "on floating bases: 404 robots; largest residual 24 (mass matrix), ..." where any robot
+/// of the campaign floated; "" otherwise.
+std::string floating_line(const dynamics_campaign& c) {
+  std::string out;
+  for (const auto& f : c.figures) {
+    if (f.floating_checked == 0) continue;
+    out += (out.empty() ? "on floating bases: " : "; ") + std::to_string(f.floating_checked) + " robots, largest " +
+           sci(f.floating_largest) + " (" + dynamics_quantity_name(f.quantity) + ")";
+  }
+  return out;
+}
+}  // namespace
+
 void print_dynamics(std::ostream& out, const std::vector<dynamics_campaign>& campaigns) {
   char line[512];
   int width = 7;  // the library column: its longest name
@@ -258,6 +273,7 @@ void print_dynamics(std::ostream& out, const std::vector<dynamics_campaign>& cam
                     c.model_checked, sci(c.model_largest).c_str(), "-", "(its M against the given robot's)");
       out << line;
     }
+    if (const std::string f = floating_line(c); !f.empty()) out << "  " << c.library << " " << f << "\n";
     if (c.refused) {
       std::string first = c.first_refusal;  // a library's message may run over lines: one here
       std::replace(first.begin(), first.end(), '\n', ' ');
@@ -295,6 +311,7 @@ std::vector<std::string> write_dynamics_report(const std::string& directory, con
     for (const auto& f : c.figures) {
       fig.push_back({{"quantity", dynamics_quantity_name(f.quantity)}, {"checked", f.checked}, {"largest", f.largest},
                      {"budget", f.budget}, {"largest_by_joints", f.largest_by_joints},
+                     {"floating_checked", f.floating_checked}, {"floating_largest", f.floating_largest},
                      {"verdict", verdict_of(c, f)}});
       md << "| " << c.library << " | " << dynamics_quantity_name(f.quantity) << " | " << f.checked << " | "
          << (f.checked ? sci(f.largest) : "-") << " | " << (f.checked ? sci(f.budget) : "-") << " | " << verdict_of(c, f) << " |\n";
@@ -329,6 +346,8 @@ std::vector<std::string> write_dynamics_report(const std::string& directory, con
       md << "\n" << c.library << " computes with the robot as it holds it (the residuals are against that robot's "
          << "Lagrangian); its exact mass matrix differs from the given robot's by up to " << sci(c.model_largest)
          << " eps of the scale (the robot where it is largest: the file held_robot.robot of dynamics.json).\n";
+  for (const auto& c : campaigns)
+    if (const std::string f = floating_line(c); !f.empty()) md << "\n" << c.library << " " << f << ".\n";
   for (const auto& r : readings_of(campaigns)) md << "\nReading: " << r << ".\n";
   md << after.str();
   // Per quantity, each library's largest residual against the robots' moving joints, and
@@ -347,7 +366,7 @@ std::vector<std::string> write_dynamics_report(const std::string& directory, con
         series.push_back(std::move(s));
       }
     if (series.empty()) continue;
-    plot_series budget{"budget 16 n", {}};
+    plot_series budget{"budget 16 n (16 (n + 1) on a floating base)", {}};
     for (std::size_t n = 1; n <= most; ++n) budget.points.emplace_back(static_cast<double>(n), 16.0 * static_cast<double>(n));
     series.push_back(std::move(budget));
     std::string name = dynamics_quantity_name(q);

@@ -71,6 +71,7 @@ dynamics_library c_dynamics_library(const c_dynamics& library) {
   dynamics_library out;
   out.name = library.name;
   out.origin = library.origin;
+  out.no_floating_base = "a library behind C calls takes robots fixed to the world only";
   out.load = [library](const robots::robot& robot) -> std::unique_ptr<dynamics_model> {
     const int n = robots::validate(robot).dofs;
     const std::string urdf = to_urdf(robot);
