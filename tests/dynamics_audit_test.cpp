@@ -536,6 +536,29 @@ TEST(dynamics_audit, the_forward_scale_takes_ms_error_from_its_terms_where_a_mom
               (inertia * std::abs(qddot) + x.tau(0)) / moment, 1e-12 * inertia / moment);
 }
 
+TEST(dynamics_audit, a_robot_beyond_the_size_limit_is_refused_by_a_typed_error_before_any_library_runs) {
+  // A chain of dynamics_max_joints links is taken; one more link is robot_too_large, named,
+  // from the campaign's entry as from require_dynamics_size (the command's check after
+  // reading a file).
+  const std::vector<double> masses(std::size_t(audit::dynamics_max_joints), 1.0);
+  rb::robot r = chain(masses);
+  EXPECT_NO_THROW(audit::require_dynamics_size(r));
+  rb::robot longer = chain(std::vector<double>(std::size_t(audit::dynamics_max_joints) + 1, 1.0));
+  try {
+    audit::require_dynamics_size(longer);
+    ADD_FAILURE() << "513 moving joints taken";
+  } catch (const audit::robot_too_large& e) {
+    EXPECT_NE(std::string(e.what()).find("robot chain has 513 moving joints, more than the 512"), std::string::npos)
+        << e.what();
+  }
+  int loaded = 0;
+  audit::dynamics_library counting = wrong_library([&loaded](rb::robot&) { ++loaded; });
+  audit::dynamics_options o;
+  o.robots = 1;
+  EXPECT_THROW(audit::run_dynamics_on(counting, longer, o), audit::robot_too_large);
+  EXPECT_EQ(loaded, 0);
+}
+
 TEST(dynamics_audit, a_second_check_at_the_same_q_and_qdot_uses_its_own_qddot_and_tau) {
   // The reference is remembered across calls; two checks of one robot at the same q and qdot
   // with other qddot and tau must each be held to their own inverse and forward dynamics.

@@ -492,7 +492,10 @@ int main(int argc, char** argv) {
     }
     std::vector<robots::robot> own;
     try {
-      for (const auto& f : urdf_files) own.push_back(audit::read_urdf(f));
+      for (const auto& f : urdf_files) {
+        own.push_back(audit::read_urdf(f));
+        audit::require_dynamics_size(own.back());
+      }
     } catch (const error& e) {
       std::cerr << "mechcheck-audit: " << e.what() << "\n";
       return 1;

@@ -17,6 +17,8 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include <Eigen/Core>
@@ -138,15 +140,19 @@ inline tree validate(const robot& r) {
   if (r.links.empty()) throw robot_error(who + ": no links");
   for (int i = 0; i < 3; ++i)
     if (!std::isfinite(r.gravity(i))) throw non_finite_error(who + ": gravity " + detail::vector_text(r.gravity) + " is not finite");
-  const auto link_index = [&](const std::string& name) {
-    for (std::size_t i = 0; i < r.links.size(); ++i)
-      if (r.links[i].name == name) return static_cast<int>(i);
-    return -1;
-  };
+  // Names by map, children by list: linear in the robot's size (a file of 9 090 joints reads
+  // in a fraction of a second).
+  std::unordered_map<std::string, int> links_by_name;
   for (std::size_t i = 0; i < r.links.size(); ++i) {
     if (r.links[i].name.empty()) throw robot_error(who + ": link " + std::to_string(i) + " has no name");
-    if (link_index(r.links[i].name) != static_cast<int>(i)) throw robot_error(who + ": two links named " + r.links[i].name);
+    if (!links_by_name.emplace(r.links[i].name, static_cast<int>(i)).second)
+      throw robot_error(who + ": two links named " + r.links[i].name);
   }
+  const auto link_index = [&](const std::string& name) {
+    const auto at = links_by_name.find(name);
+    return at == links_by_name.end() ? -1 : at->second;
+  };
+  std::unordered_set<std::string> joint_names;
   tree t;
   const std::size_t nl = r.links.size(), nj = r.joints.size();
   std::vector<int> parent_joint(nl, -1);
@@ -157,8 +163,7 @@ inline tree validate(const robot& r) {
     const joint& jt = r.joints[j];
     const std::string where = who + ": joint " + (jt.name.empty() ? std::to_string(j) : jt.name);
     if (jt.name.empty()) throw robot_error(where + " has no name");
-    for (std::size_t k = 0; k < j; ++k)
-      if (r.joints[k].name == jt.name) throw robot_error(who + ": two joints named " + jt.name);
+    if (!joint_names.insert(jt.name).second) throw robot_error(who + ": two joints named " + jt.name);
     const int p = link_index(jt.parent), c = link_index(jt.child);
     if (p < 0) throw robot_error(where + ": its parent \"" + jt.parent + "\" is not a link");
     if (c < 0) throw robot_error(where + ": its child \"" + jt.child + "\" is not a link");
@@ -193,15 +198,16 @@ inline tree validate(const robot& r) {
     }
   if (roots == 0) throw robot_error(who + ": every link has a parent: the joints form a loop");
   // Parents first: breadth-first from the root; a joint not reached lies on a loop.
+  std::vector<std::vector<int>> below(nl);  // each link's child joints, in the description's order
+  for (std::size_t j = 0; j < nj; ++j) below[std::size_t(t.parent_link[j])].push_back(static_cast<int>(j));
   std::vector<int> frontier{t.root};
   while (!frontier.empty()) {
     std::vector<int> next;
     for (int l : frontier)
-      for (std::size_t j = 0; j < nj; ++j)
-        if (t.parent_link[j] == l) {
-          t.order.push_back(static_cast<int>(j));
-          next.push_back(t.child_link[j]);
-        }
+      for (const int j : below[std::size_t(l)]) {
+        t.order.push_back(j);
+        next.push_back(t.child_link[std::size_t(j)]);
+      }
     frontier = std::move(next);
   }
   if (t.order.size() != nj)

@@ -44,6 +44,21 @@ class robot_refused : public error {
   using error::error;
 };
 
+/// A robot beyond the audit's size (dynamics_max_joints), refused before any library runs.
+class robot_too_large : public domain_error {
+ public:
+  using domain_error::domain_error;
+};
+
+/// The most moving joints (a floating base's six motions besides) the dynamics audit takes
+/// on a robot: its mpfr50 reference costs n^3 / 3 operations a state for the Cholesky of M
+/// (and M's n^2 entries); measured in docs/audit.md ("Robots of any size").
+constexpr int dynamics_max_joints = 512;
+
+/// Throws robot_too_large for a robot of more moving joints than dynamics_max_joints (and
+/// robots::robot_error for one that is not a robot).
+void require_dynamics_size(const robots::robot& robot);
+
 /// A library's failure on a robot it accepted: an error code returned, a value of the wrong
 /// size. The message names the library, the quantity and the status.
 class library_failure : public error {

@@ -1,6 +1,7 @@
 // The dynamics audit over random robots, shrunk by RapidCheck, and its report (dynamics.hpp).
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -71,6 +72,7 @@ dynamics_campaign campaign(const std::string& name, const std::string& origin, c
                        dynamics_quantity::forward})
     c.figures.push_back({q, 0, 0, 0});
   bool failed = false;
+  auto last_progress = std::chrono::steady_clock::now();
   const auto property = [&] {
     const generators::robot_case rc = draw();
     dynamics_check check;
@@ -105,8 +107,12 @@ dynamics_campaign campaign(const std::string& name, const std::string& origin, c
             double& by = f.largest_by_joints[joints - 1];
             by = std::max(by, r.residual);
           }
-      if (opt.progress && c.robots % 25 == 0)
-        opt.progress(name + ": " + std::to_string(c.robots) + " of " + std::to_string(opt.robots) + " robots");
+      // Every 25 robots, and at least every 2 s (a large robot's states take seconds each).
+      const auto now = std::chrono::steady_clock::now();
+      if (opt.progress && (c.robots % 25 == 0 || now - last_progress >= std::chrono::seconds(2))) {
+        last_progress = now;
+        opt.progress(name + ": " + std::to_string(c.robots) + " of " + std::to_string(opt.robots) + " " + c.unit);
+      }
     }
     for (const auto& r : check.residuals)
       if (!r.within()) {
@@ -151,6 +157,7 @@ dynamics_campaign run_dynamics_checker(const std::string& name, const std::strin
     const rc::Gen<generators::robot_case> cases = dynamics_robot_cases(links);
     return campaign(name, origin, check, opt, [cases] { return *cases; }, selector);
   }
+  require_dynamics_size(*robot);
   const robots::tree t = robots::validate(*robot);
   dynamics_campaign c = campaign(name, origin, check, opt, [&] {
     generators::robot_case rc;
@@ -177,6 +184,15 @@ dynamics_campaign run_dynamics_checker(const std::string& name, const std::strin
   c.max_links = t.dofs;
   c.readings = robot->readings;
   return c;
+}
+
+void require_dynamics_size(const robots::robot& robot) {
+  const int n = robots::validate(robot).dofs;
+  if (n > dynamics_max_joints)
+    throw robot_too_large("robot " + robot.name + " has " + std::to_string(n) + " moving joints, more than the " +
+                          std::to_string(dynamics_max_joints) +
+                          " the dynamics audit takes: its mpfr50 reference solves M by Cholesky, n^3 / 3 operations "
+                          "a state (docs/audit.md, \"Robots of any size\")");
 }
 
 rc::Gen<generators::robot_case> dynamics_robot_cases(int max_links) {
