@@ -16,6 +16,8 @@
 /// armature qdot^2 / 2 to T (robot.hpp). Nothing here is a recursive dynamics algorithm: it is the reference that such
 /// algorithms (composite rigid bodies, Newton-Euler, articulated bodies) are held to.
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -457,8 +459,11 @@ dynamic_vector<T> forward_dynamics(const robot_model<T>& m, const dynamic_vector
 ///   mass    = sum m_i                     (M's entries along slides; d(m r^2)/dr <= m (1 + r^2)).
 /// Near a pose where a centre of mass lies on an axis, or a link hangs straight, M and g
 /// cancel to far less than these, and rounding stays relative to them.
+/// lever  = max over the links of their path from the world's origin (their frames' and
+///           centres of mass' distances are within it: the scale of a pose and of a
+///           Jacobian's column, eqs 126-128).
 struct term_scale {
-  double inertia = 0, gravity = 0, mass = 0;
+  double inertia = 0, gravity = 0, mass = 0, lever = 0;
 };
 
 /// root_offset: the root's distance from the world's origin (a floating base at p: |p|).
@@ -475,13 +480,16 @@ term_scale term_scales(const robot_model<T>& m, const Eigen::VectorXd& q, double
                                                m.description.joints[ju].origin.xyz.norm() + (slide ? std::abs(q(k)) : 0.0);
   }
   term_scale out;
-  for (std::size_t i = 0; i < nl; ++i)
+  for (std::size_t i = 0; i < nl; ++i) {
+    out.lever = std::max(out.lever, path[i]);
     if (const auto& b = m.description.links[i].body) {
       const double r = path[i] + b->origin.xyz.norm();
+      out.lever = std::max(out.lever, r);
       out.inertia += b->mass * r * r + b->inertia.cwiseAbs().maxCoeff();
       out.gravity += b->mass * m.description.gravity.norm() * r;
       out.mass += b->mass;
     }
+  }
   return out;
 }
 

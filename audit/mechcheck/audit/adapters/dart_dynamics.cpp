@@ -123,7 +123,13 @@ namespace {
 class dart_model final : public dynamics_model {
  public:
   explicit dart_model(const robots::robot& r)
-      : skeleton_(robot_skeleton(r, order_)), n_(static_cast<int>(order_.order.size())), floating_(r.floating) {}
+      : skeleton_(robot_skeleton(r, order_)), n_(static_cast<int>(order_.order.size())), floating_(r.floating) {
+    for (const robots::link& l : r.links) {
+      BodyNode* b = skeleton_->getBodyNode(l.name);
+      if (!b) throw robot_refused("dart: the Skeleton has no BodyNode " + l.name);
+      body_.push_back(b);
+    }
+  }
 
   std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override {
     set_positions(q);
@@ -150,6 +156,34 @@ class dart_model final : public dynamics_model {
     skeleton_->computeForwardDynamics();
     return from_dart(skeleton_->getAccelerations());
   }
+  /// Each BodyNode's getWorldTransform.
+  std::optional<Eigen::MatrixXd> frame_poses(const Eigen::VectorXd& q) override {
+    set_positions(q);
+    Eigen::MatrixXd out(12, static_cast<Eigen::Index>(body_.size()));
+    for (std::size_t l = 0; l < body_.size(); ++l) {
+      const Eigen::Isometry3d t = body_[l]->getWorldTransform();
+      const auto col = static_cast<Eigen::Index>(l);
+      out.block<3, 1>(0, col) = t.translation();
+      for (int c = 0; c < 3; ++c) out.block<3, 1>(3 + 3 * c, col) = t.linear().col(c);
+    }
+    return out;
+  }
+  /// Skeleton::getWorldJacobian of each BodyNode (its origin, in the world; DART's rows
+  /// (omega; v) stacked here (v; omega)), columns the Skeleton's degrees of freedom in the
+  /// robot's order (a floating base's body twist needs no more: order_).
+  std::optional<Eigen::MatrixXd> frame_jacobians(const Eigen::VectorXd& q) override {
+    set_positions(q);
+    Eigen::MatrixXd out(6 * static_cast<Eigen::Index>(body_.size()), n_);
+    for (std::size_t l = 0; l < body_.size(); ++l) {
+      const dart::math::Jacobian j = skeleton_->getWorldJacobian(body_[l]);
+      const auto row = 6 * static_cast<Eigen::Index>(l);
+      for (int i = 0; i < n_; ++i) {
+        out.block<3, 1>(row, order_.order[std::size_t(i)]) = j.block<3, 1>(3, i);
+        out.block<3, 1>(row + 3, order_.order[std::size_t(i)]) = j.block<3, 1>(0, i);
+      }
+    }
+    return out;
+  }
 
  private:
   /// q in DART's positions; a floating base's pose (q's head: position, quaternion w x y z,
@@ -172,6 +206,7 @@ class dart_model final : public dynamics_model {
   SkeletonPtr skeleton_;
   int n_ = 0;  ///< the Skeleton's degrees of freedom
   bool floating_ = false;
+  std::vector<BodyNode*> body_;  ///< each link's BodyNode
 };
 }  // namespace
 
@@ -188,7 +223,9 @@ dynamics_library dynamics() {
              "child's frame, a WeldJoint for a fixed joint and for the root to the world; no joint damping, "
              "spring, Coulomb friction or enforced limit (DART 6.12 has no rotor inertia); a floating base on a "
              "FreeJoint (positions: convertToPositions of the root's transform; velocities: the root's spatial "
-             "velocity in its own frame, angular first, (w_b; v_b), and their rates; forces (n_b; f_b))";
+             "velocity in its own frame, angular first, (w_b; v_b), and their rates; forces (n_b; f_b)); each "
+             "link's frame by BodyNode::getWorldTransform, its Jacobian by Skeleton::getWorldJacobian (the "
+             "BodyNode's origin, rows (omega; v) in the world)";
   l.no_floating_base.clear();
   l.load = [](const robots::robot& r) -> std::unique_ptr<dynamics_model> { return std::make_unique<dart_model>(r); };
   return l;

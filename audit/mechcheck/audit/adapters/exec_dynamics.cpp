@@ -28,6 +28,8 @@ const char* reply_field(dynamics_quantity q) {
     case dynamics_quantity::bias: return "h";
     case dynamics_quantity::inverse: return "tau";
     case dynamics_quantity::forward: return "qddot";
+    case dynamics_quantity::frame_poses:
+    case dynamics_quantity::frame_jacobians: break;  // not carried (exec_wire.cpp)
   }
   return "?";
 }

@@ -1,6 +1,7 @@
 // Orocos KDL's dynamics as a dynamics_library (adapters/kdl.hpp).
 #include "mechcheck/audit/adapters/kdl.hpp"
 
+#include <functional>
 #include <map>
 
 #include <kdl/chain.hpp>
@@ -10,8 +11,11 @@
 #include <kdl/frames.hpp>
 #include <kdl/jntarray.hpp>
 #include <kdl/jntspaceinertiamatrix.hpp>
+#include <kdl/jacobian.hpp>
 #include <kdl/tree.hpp>
+#include <kdl/treefksolverpos_recursive.hpp>
 #include <kdl/treeidsolver_recursive_newton_euler.hpp>
+#include <kdl/treejnttojacsolver.hpp>
 
 #include "mechcheck/robots/dynamics.hpp"
 
@@ -45,7 +49,21 @@ class kdl_model final : public dynamics_model {
   explicit kdl_model(const robots::robot& r) : robot_(r), tree_(r.links[std::size_t(robots::validate(r).root)].name) {
     const robots::tree t = robots::validate(r);
     n_ = t.dofs;
-    for (const int j : t.order) {
+    // The segments depth first, as kdl_parser adds them: a Tree's copy renumbers its joints
+    // depth first (Tree::Tree(const Tree&) re-adds them by addTreeRecursive), and
+    // TreeFkSolverPos_recursive and TreeJntToJacSolver hold a copy where TreeIdSolver_RNE
+    // holds the tree itself; inserted breadth first, the same JntArray would mean other joints
+    // to the two.
+    std::vector<int> depth_first;
+    const std::function<void(int)> below = [&](int link) {
+      for (std::size_t k = 0; k < r.joints.size(); ++k)
+        if (t.parent_link[k] == link) {
+          depth_first.push_back(static_cast<int>(k));
+          below(t.child_link[k]);
+        }
+    };
+    below(t.root);
+    for (const int j : depth_first) {
       const robots::joint& jt = r.joints[std::size_t(j)];
       const KDL::Frame origin = frame(jt.origin);
       KDL::Joint joint(jt.name, KDL::Joint::None);
@@ -79,6 +97,13 @@ class kdl_model final : public dynamics_model {
       if (j.getType() != KDL::Joint::None) tree_order_.order[GetTreeElementQNr(element)] = coordinate_.at(j.getName());
     }
     gravity_ = vec(r.gravity);
+    root_ = t.root;
+    const KDL::Tree copy(tree_);
+    for (const auto& [name, element] : copy.getSegments())
+      if (GetTreeElementSegment(element).getJoint().getType() != KDL::Joint::None &&
+          tree_order_.order[GetTreeElementQNr(element)] != coordinate_.at(GetTreeElementSegment(element).getJoint().getName()))
+        throw error("kdl: a copy of the tree numbers joint " + GetTreeElementSegment(element).getJoint().getName() +
+                    " otherwise than the tree");
   }
 
   std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override {
@@ -120,6 +145,40 @@ class kdl_model final : public dynamics_model {
     check(fd.CartToJnt(in_chain(q), in_chain(qdot), in_chain(tau), none, a), "ChainFdSolver_RNE::CartToJnt");
     return from_chain(a);
   }
+  /// TreeFkSolverPos_recursive::JntToCart of each link's segment (its tip frame, the link's);
+  /// the root is the tree's base frame, the world's.
+  std::optional<Eigen::MatrixXd> frame_poses(const Eigen::VectorXd& q) override {
+    KDL::TreeFkSolverPos_recursive fk(tree_);
+    const KDL::JntArray joints = in_tree(q);
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(12, static_cast<Eigen::Index>(robot_.links.size()));
+    for (std::size_t l = 0; l < robot_.links.size(); ++l) {
+      KDL::Frame f = KDL::Frame::Identity();
+      if (static_cast<int>(l) != root_)
+        check(fk.JntToCart(joints, f, robot_.links[l].name), "TreeFkSolverPos_recursive::JntToCart");
+      const auto col = static_cast<Eigen::Index>(l);
+      for (int i = 0; i < 3; ++i) out(i, col) = f.p(i);
+      for (int c = 0; c < 3; ++c)
+        for (int i = 0; i < 3; ++i) out(3 + 3 * c + i, col) = f.M(i, c);
+    }
+    return out;
+  }
+  /// TreeJntToJacSolver::JntToJac of each link's segment: "expressed in the baseframe of the
+  /// tree", "the reference point is in the end-segment" (treejnttojacsolver.hpp), rows (v;
+  /// omega) as KDL's Twist; the root's rows zero.
+  std::optional<Eigen::MatrixXd> frame_jacobians(const Eigen::VectorXd& q) override {
+    KDL::TreeJntToJacSolver solver(tree_);
+    const KDL::JntArray joints = in_tree(q);
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(6 * static_cast<Eigen::Index>(robot_.links.size()), n_);
+    KDL::Jacobian jac(static_cast<unsigned>(n_));
+    for (std::size_t l = 0; l < robot_.links.size(); ++l) {
+      if (static_cast<int>(l) == root_) continue;
+      jac.data.setZero();
+      check(solver.JntToJac(joints, jac, robot_.links[l].name), "TreeJntToJacSolver::JntToJac");
+      for (int i = 0; i < n_; ++i)
+        out.block<6, 1>(6 * static_cast<Eigen::Index>(l), tree_order_.order[std::size_t(i)]) = jac.data.col(i);
+    }
+    return out;
+  }
 
  private:
   static KDL::JntArray joints(const Eigen::VectorXd& x) {
@@ -135,7 +194,7 @@ class kdl_model final : public dynamics_model {
   KDL::Tree tree_;
   KDL::Chain chain_data_;
   bool chain_ = false;
-  int n_ = 0;
+  int n_ = 0, root_ = 0;
   std::map<std::string, int> coordinate_;
   coordinate_order chain_order_, tree_order_;  ///< KDL's joint numbering on the chain, on the tree
   KDL::Vector gravity_;
@@ -150,7 +209,8 @@ dynamics_library kdl_dynamics() {
              "ROS's kdl_parser builds it from URDF; a joint's armature as the Joint's inertia (JntToMass adds it "
              "to H's diagonal, the RNE solvers inertia q_dotdot); no damping: KDL 1.5.1 keeps a Joint's damping "
              "and none of its solvers reads it (getDamping is called nowhere in its source), so a robot with "
-             "damping is refused";
+             "damping is refused; each link's frame by TreeFkSolverPos_recursive::JntToCart and its Jacobian by "
+             "TreeJntToJacSolver::JntToJac (the segment's tip, in the base frame), on a chain and a tree alike";
   l.sets_armature = true;
   l.no_floating_base = "KDL has no floating base: a KDL::Chain's and a KDL::Tree's root is the world's frame, and "
                        "its Joint::JointType (RotAxis, RotX..Z, TransAxis, TransX..Z, Fixed; kdl/joint.hpp) has no joint of six "

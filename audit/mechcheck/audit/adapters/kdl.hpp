@@ -8,7 +8,8 @@
 /// ChainDynParam's JntToMass (M) and JntToCoriolis + JntToGravity (h),
 /// ChainIdSolver_RNE (inverse dynamics), ChainFdSolver_RNE (forward dynamics); on a
 /// branching tree TreeIdSolver_RNE (inverse dynamics) alone -- M, h and forward dynamics
-/// are refused there (KDL's solvers of them take a chain). KDL's error codes become
+/// are refused there (KDL's solvers of them take a chain); on either, each link's frame
+/// (TreeFkSolverPos_recursive) and Jacobian (TreeJntToJacSolver). KDL's error codes become
 /// errors naming the solver and the code.
 
 #include "mechcheck/audit/dynamics/dynamics.hpp"

@@ -162,7 +162,9 @@ constexpr base_convention freejoint_velocity{false, true, false};
 
 class mujoco_model final : public dynamics_model {
  public:
-  mujoco_model(const robots::robot& r, const std::string& xml) : floating_(r.floating) {
+  /// kinematics: the model's bodies are the robot's links by name (its MJCF, not MuJoCo's
+  /// URDF import, which fuses links joined by fixed joints).
+  mujoco_model(const robots::robot& r, const std::string& xml, bool kinematics) : floating_(r.floating) {
     const robots::tree t = robots::validate(r);
     n_ = t.dofs;
     const int base = floating_ ? 6 : 0;
@@ -191,6 +193,13 @@ class mujoco_model final : public dynamics_model {
       if (id < 0) throw robot_refused("mujoco: the model has no joint " + r.joints[j].name);
       qpos_[std::size_t(t.coordinate[j] + (floating_ ? 7 : 0))] = m_->jnt_qposadr[id];
       dof_[std::size_t(t.coordinate[j] + base)] = m_->jnt_dofadr[id];
+    }
+    if (!kinematics) return;
+    // Each link's body: a fixed base's root is the world body (0), welded where the robot is.
+    for (std::size_t l = 0; l < r.links.size(); ++l) {
+      const int id = !floating_ && static_cast<int>(l) == t.root ? 0 : mj_name2id(m_.get(), mjOBJ_BODY, r.links[l].name.c_str());
+      if (id < 0) throw robot_refused("mujoco: the model has no body " + r.links[l].name);
+      body_.push_back(id);
     }
   }
 
@@ -228,6 +237,44 @@ class mujoco_model final : public dynamics_model {
     for (int i = 0; i < nv(); ++i) d_->qfrc_applied[dof_[std::size_t(i)]] = applied(i);
     mj_forward(m_.get(), d_.get());
     return frame_.acceleration_from_library(read(d_->qacc));
+  }
+  /// xpos and xmat (row-major) after mj_kinematics.
+  std::optional<Eigen::MatrixXd> frame_poses(const Eigen::VectorXd& q) override {
+    if (body_.empty()) return std::nullopt;
+    set(q, Eigen::VectorXd::Zero(nv()));
+    mj_kinematics(m_.get(), d_.get());
+    Eigen::MatrixXd out(12, static_cast<Eigen::Index>(body_.size()));
+    for (std::size_t l = 0; l < body_.size(); ++l) {
+      const mjtNum* x = d_->xpos + 3 * body_[l];
+      const mjtNum* r = d_->xmat + 9 * body_[l];
+      const auto col = static_cast<Eigen::Index>(l);
+      for (int i = 0; i < 3; ++i) out(i, col) = x[i];
+      for (int c = 0; c < 3; ++c)
+        for (int i = 0; i < 3; ++i) out(3 + 3 * c + i, col) = r[3 * i + c];
+    }
+    return out;
+  }
+  /// mj_jacBody (jacp over jacr: the body frame's origin, xpos, and the body's rotation, both
+  /// in the world) after mj_kinematics and mj_comPos, which it needs (cdof, subtree_com); its
+  /// columns MuJoCo's velocities, each row through the base's convention (J = J_mj T).
+  std::optional<Eigen::MatrixXd> frame_jacobians(const Eigen::VectorXd& q) override {
+    if (body_.empty()) return std::nullopt;
+    set(q, Eigen::VectorXd::Zero(nv()));
+    mj_kinematics(m_.get(), d_.get());
+    mj_comPos(m_.get(), d_.get());
+    const std::size_t nv_mj = std::size_t(m_->nv);
+    std::vector<mjtNum> jacp(3 * nv_mj), jacr(3 * nv_mj);
+    Eigen::MatrixXd out(6 * static_cast<Eigen::Index>(body_.size()), nv());
+    for (std::size_t l = 0; l < body_.size(); ++l) {
+      mj_jacBody(m_.get(), d_.get(), jacp.data(), jacr.data(), body_[l]);
+      for (int row = 0; row < 6; ++row) {
+        const mjtNum* j = (row < 3 ? jacp.data() : jacr.data()) + std::size_t(row % 3) * nv_mj;
+        Eigen::VectorXd in_mj(nv());
+        for (int i = 0; i < nv(); ++i) in_mj(i) = j[dof_[std::size_t(i)]];
+        out.row(6 * static_cast<Eigen::Index>(l) + row) = frame_.from_library(in_mj).transpose();
+      }
+    }
+    return out;
   }
 
  private:
@@ -272,6 +319,7 @@ class mujoco_model final : public dynamics_model {
   /// The state's components at MuJoCo's: qpos_[i] the qpos address of q(i), dof_[i] the qvel
   /// (and force, acceleration) address of u(i).
   std::vector<int> qpos_, dof_;
+  std::vector<int> body_;  ///< each link's body (none: the model offers no kinematics)
 };
 }  // namespace
 
@@ -287,14 +335,15 @@ const char* const conventions =
 const char* const freejoint =
     "; a floating base as a body with a freejoint (qpos: position, then quaternion w x y z, as the state's; qvel: the "
     "linear velocity in the world, R v_b, and the angular one in the body, w_b; qacc their rates, so that qacc's "
-    "linear part is R (vdot_b + w_b x v_b); forces and M through the same map)";
+    "linear part is R (vdot_b + w_b x v_b); forces, M and the Jacobians' columns through the same map)";
 
-dynamics_library library(std::string name, std::string origin, std::function<std::string(const robots::robot&)> model) {
+dynamics_library library(std::string name, std::string origin, std::function<std::string(const robots::robot&)> model,
+                         bool kinematics) {
   dynamics_library l;
   l.name = std::move(name);
   l.origin = "MuJoCo " + version() + ": " + std::move(origin) + conventions;
-  l.load = [model](const robots::robot& r) -> std::unique_ptr<dynamics_model> {
-    return std::make_unique<mujoco_model>(r, model(r));
+  l.load = [model, kinematics](const robots::robot& r) -> std::unique_ptr<dynamics_model> {
+    return std::make_unique<mujoco_model>(r, model(r), kinematics);
   };
   l.sets_damping = true;
   return l;
@@ -305,8 +354,9 @@ dynamics_library dynamics() {
   dynamics_library l = library("mujoco",
                  "mj_fullM of qM, qfrc_bias and qacc after mj_forward, qfrc_inverse after mj_inverse, on a model "
                  "built as MJCF (each link a body at its joint's origin, its inertia turned into the body frame as "
-                 "fullinertia, hinge and slide joints, no limits or geoms)",
-                 robot_mjcf);
+                 "fullinertia, hinge and slide joints, no limits or geoms); each link's frame as xpos and xmat after "
+                 "mj_kinematics, its Jacobian by mj_jacBody after mj_kinematics and mj_comPos",
+                 robot_mjcf, true);
   l.sets_armature = true;
   l.origin += freejoint;
   l.no_floating_base.clear();
@@ -323,7 +373,8 @@ dynamics_library urdf_dynamics() {
                    robots::robot without_friction = r;
                    for (robots::joint& j : without_friction.joints) j.friction = 0;
                    return to_urdf(without_friction);
-                 });
+                 },
+                 false);
   l.no_floating_base = "its adapter writes no floating joint for MuJoCo's URDF import";
   return l;
 }

@@ -25,6 +25,8 @@ const char* dynamics_quantity_name(dynamics_quantity q) {
     case dynamics_quantity::bias: return "bias forces";
     case dynamics_quantity::inverse: return "inverse dynamics";
     case dynamics_quantity::forward: return "forward dynamics";
+    case dynamics_quantity::frame_poses: return "frame poses";
+    case dynamics_quantity::frame_jacobians: return "frame Jacobians";
   }
   return "?";
 }
@@ -185,6 +187,72 @@ std::string unset_joint_terms(const robots::robot& robot, const std::string& lib
   return {};
 }
 
+namespace {
+/// A floating robot's base pose from q's head (dynamics_state), the quaternion normalized in
+/// mpfr50.
+robots::base_pose<mpfr50> floating_base_pose(const Eigen::VectorXd& q) {
+  if (q.size() < 7) throw dimension_error("floating_base_pose: q has " + std::to_string(q.size()) + " components, fewer than the base's 7");
+  require_finite_vector(q, "floating_base_pose", "q");
+  const Eigen::Quaternion<mpfr50> r(mpfr50(q(3)), mpfr50(q(4)), mpfr50(q(5)), mpfr50(q(6)));
+  if (!(r.squaredNorm() > 0)) throw domain_error("floating_base_pose: the base's quaternion is zero");
+  return {r.normalized().toRotationMatrix(), vector3<mpfr50>(mpfr50(q(0)), mpfr50(q(1)), mpfr50(q(2)))};
+}
+
+/// The kinematics of `robot` at x (dynamics_quantity's frame_poses and frame_jacobians) in
+/// mpfr50, rounded once, its links in its order. Always the robot given, where a library holds
+/// another (MuJoCo's compiler changes the inertias, not the bodies' frames, which it holds as
+/// written; the held robot's frames come back through roll, pitch and yaw, which lose digits
+/// near a pitch of +-pi/2: 179 eps on a random robot).
+struct kinematic_terms {
+  Eigen::MatrixXd poses, jacobians;
+  double scale = 0;
+  int moving_links = 0;
+};
+
+kinematic_terms kinematics_of(const robots::robot& robot, const dynamics_state& x) {
+  const robots::robot_model<mpfr50> m(robot);
+  const int n = m.dofs(), base = robot.floating ? 6 : 0, nq = n + (robot.floating ? 7 : 0);
+  if (x.q.size() != nq)
+    throw dimension_error("check_dynamics: robot " + robot.name + " has " + std::to_string(nq) + " coordinates, q has " +
+                          std::to_string(x.q.size()));
+  const Eigen::VectorXd joints = x.q.tail(n);
+  const dynamic_vector<mpfr50> q = widened<mpfr50>(joints);
+  std::optional<robots::base_pose<mpfr50>> b;
+  if (robot.floating) b = floating_base_pose(x.q);
+  const auto states = [&](const dynamic_vector<mpfr50>& u) {
+    if (!b) return robots::link_states(m, q, u);
+    return robots::link_states(m, q, dynamic_vector<mpfr50>(u.tail(n)), robots::detail::floating_root(*b, u));
+  };
+  const auto links = static_cast<Eigen::Index>(robot.links.size());
+  kinematic_terms out;
+  out.poses.resize(12, links);
+  const std::vector<robots::link_state<mpfr50>> rest = states(dynamic_vector<mpfr50>::Zero(n + base));
+  for (Eigen::Index l = 0; l < links; ++l) {
+    const robots::link_state<mpfr50>& s = rest[std::size_t(l)];
+    for (int i = 0; i < 3; ++i) out.poses(i, l) = static_cast<double>(s.origin(i));
+    for (int c = 0; c < 3; ++c)
+      for (int i = 0; i < 3; ++i) out.poses(3 + 3 * c + i, l) = static_cast<double>(s.rotation(i, c));
+  }
+  // Column k: every link's twist at the velocity e_k (the twist is linear in the velocities).
+  out.jacobians.resize(6 * links, n + base);
+  for (int k = 0; k < n + base; ++k) {
+    dynamic_vector<mpfr50> e = dynamic_vector<mpfr50>::Zero(n + base);
+    e(k) = 1;
+    const std::vector<robots::link_state<mpfr50>> moving = states(e);
+    for (Eigen::Index l = 0; l < links; ++l) {
+      const robots::link_state<mpfr50>& s = moving[std::size_t(l)];
+      for (int i = 0; i < 3; ++i) {
+        out.jacobians(6 * l + i, k) = static_cast<double>(s.velocity(i));
+        out.jacobians(6 * l + 3 + i, k) = static_cast<double>(s.omega(i));
+      }
+    }
+  }
+  out.scale = std::max(1.0, robots::term_scales(m, joints, robot.floating ? x.q.head<3>().norm() : 0.0).lever);
+  out.moving_links = n + (robot.floating ? 1 : 0);
+  return out;
+}
+}  // namespace
+
 dynamics_check check_dynamics(const dynamics_library& library, const robots::robot& robot, const dynamics_state& x) {
   dynamics_check out;
   out.refused = unset_joint_terms(robot, library.name, library.sets_armature, library.sets_damping);
@@ -231,20 +299,18 @@ dynamics_check check_dynamics(const dynamics_library& library, const robots::rob
     out.residuals.push_back(residual_of(dynamics_quantity::inverse, *t, e.tau, e.scale_tau, e.moving_links, who));
   if (const auto a = model->forward(x.q, x.qdot, x.tau))
     out.residuals.push_back(residual_of(dynamics_quantity::forward, *a, e.qddot, e.scale_forward, e.moving_links, who));
+  const std::optional<Eigen::MatrixXd> poses = model->frame_poses(x.q), jacobians = model->frame_jacobians(x.q);
+  if (poses || jacobians) {
+    const kinematic_terms k = kinematics_of(robot, x);
+    if (poses)
+      out.residuals.push_back(residual_of(dynamics_quantity::frame_poses, *poses, k.poses, k.scale, k.moving_links, who));
+    if (jacobians)
+      out.residuals.push_back(
+          residual_of(dynamics_quantity::frame_jacobians, *jacobians, k.jacobians, k.scale, k.moving_links, who));
+  }
   return out;
 }
 
-namespace {
-/// A floating robot's base pose from q's head (dynamics_state), the quaternion normalized in
-/// mpfr50.
-robots::base_pose<mpfr50> floating_base_pose(const Eigen::VectorXd& q) {
-  if (q.size() < 7) throw dimension_error("floating_base_pose: q has " + std::to_string(q.size()) + " components, fewer than the base's 7");
-  require_finite_vector(q, "floating_base_pose", "q");
-  const Eigen::Quaternion<mpfr50> r(mpfr50(q(3)), mpfr50(q(4)), mpfr50(q(5)), mpfr50(q(6)));
-  if (!(r.squaredNorm() > 0)) throw domain_error("floating_base_pose: the base's quaternion is zero");
-  return {r.normalized().toRotationMatrix(), vector3<mpfr50>(mpfr50(q(0)), mpfr50(q(1)), mpfr50(q(2)))};
-}
-}  // namespace
 
 reference_terms reference_terms_at(const robots::robot& robot, const dynamics_state& x) {
   const robots::robot_model<mpfr50> m(robot);
@@ -310,6 +376,12 @@ dynamics_residual reference_only(dynamics_quantity quantity, const robots::robot
     case dynamics_quantity::bias: return residual_of(quantity, e.bias, e.bias, e.scale_h, e.moving_links, "reference");
     case dynamics_quantity::inverse: return residual_of(quantity, e.tau, e.tau, e.scale_tau, e.moving_links, "reference");
     case dynamics_quantity::forward: return residual_of(quantity, e.qddot, e.qddot, e.scale_forward, e.moving_links, "reference");
+    case dynamics_quantity::frame_poses:
+    case dynamics_quantity::frame_jacobians: {
+      const kinematic_terms k = kinematics_of(robot, x);
+      const Eigen::MatrixXd& v = quantity == dynamics_quantity::frame_poses ? k.poses : k.jacobians;
+      return residual_of(quantity, v, v, k.scale, k.moving_links, "reference");
+    }
   }
   throw domain_error("reference_only: unknown quantity");
 }

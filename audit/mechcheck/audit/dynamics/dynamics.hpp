@@ -66,9 +66,25 @@ class library_failure : public error {
   using error::error;
 };
 
-/// The quantities of the equations of motion.
-enum class dynamics_quantity { mass_matrix, bias, inverse, forward };
+/// The quantities of the equations of motion, and the kinematics every controller asks
+/// before them:
+///   frame_poses      12 x L: column l the frame of the robot's link l (its order) in the
+///                    world, its origin over its rotation's three columns;
+///   frame_jacobians  6 L x v: rows 6 l .. 6 l + 5 link l's geometric Jacobian (v_o; omega),
+///                    the velocity of its frame's origin and its angular velocity in the world,
+///                    against the state's velocities (qdot; u on a floating base, whose
+///                    columns a library's base convention maps as its forces: J = J_lib T).
+/// Their reference is the forward kinematics of robots/dynamics.hpp (link_states) in mpfr50,
+/// a Jacobian's column k the links' twists at velocity e_k, exactly; scale max(1, the
+/// longest path from the world's origin to a link's frame or centre of mass), which bounds
+/// every position and every column of a revolute joint (a rotation's entries and a slide's
+/// columns are within 1).
+enum class dynamics_quantity { mass_matrix, bias, inverse, forward, frame_poses, frame_jacobians };
 const char* dynamics_quantity_name(dynamics_quantity q);
+/// Every quantity, in the reports' order.
+inline constexpr dynamics_quantity all_dynamics_quantities[] = {
+    dynamics_quantity::mass_matrix, dynamics_quantity::bias,        dynamics_quantity::inverse,
+    dynamics_quantity::forward,     dynamics_quantity::frame_poses, dynamics_quantity::frame_jacobians};
 
 /// One library's model of one robot: each quantity it offers (nothing where it offers none).
 /// Coordinates in the description's order of its moving joints (robots::tree).
@@ -88,6 +104,10 @@ class dynamics_model {
                                                  const Eigen::VectorXd& qddot) = 0;
   virtual std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                                                  const Eigen::VectorXd& tau) = 0;
+  /// The kinematics (dynamics_quantity's frame_poses and frame_jacobians, the links in the
+  /// order of the robot the model was built from); none by default.
+  virtual std::optional<Eigen::MatrixXd> frame_poses(const Eigen::VectorXd& /*q*/) { return std::nullopt; }
+  virtual std::optional<Eigen::MatrixXd> frame_jacobians(const Eigen::VectorXd& /*q*/) { return std::nullopt; }
 };
 
 /// A dynamics library: how it builds its model of a robot (throws robot_refused).

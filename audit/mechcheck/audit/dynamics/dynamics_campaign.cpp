@@ -68,8 +68,7 @@ dynamics_campaign campaign(const std::string& name, const std::string& origin, c
   if (user) c.unit = "states";
   c.seed = opt.seed;
   c.max_links = opt.max_links;
-  for (const auto q : {dynamics_quantity::mass_matrix, dynamics_quantity::bias, dynamics_quantity::inverse,
-                       dynamics_quantity::forward})
+  for (const auto q : all_dynamics_quantities)
     c.figures.push_back({q, 0, 0, 0});
   bool failed = false;
   auto last_progress = std::chrono::steady_clock::now();
@@ -368,8 +367,7 @@ std::vector<std::string> write_dynamics_report(const std::string& directory, con
   md << after.str();
   // Per quantity, each library's largest residual against the robots' moving joints, and
   // the budget 16 n.
-  for (const auto q : {dynamics_quantity::mass_matrix, dynamics_quantity::bias, dynamics_quantity::inverse,
-                       dynamics_quantity::forward}) {
+  for (const auto q : all_dynamics_quantities) {
     std::vector<plot_series> series;
     std::size_t most = 0;
     for (const auto& c : campaigns)

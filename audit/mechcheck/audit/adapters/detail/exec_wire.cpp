@@ -148,11 +148,14 @@ const char* quantity_op(dynamics_quantity q) {
     case dynamics_quantity::bias: return "bias";
     case dynamics_quantity::inverse: return "inverse";
     case dynamics_quantity::forward: return "forward";
+    case dynamics_quantity::frame_poses: return "frame_poses";
+    case dynamics_quantity::frame_jacobians: return "frame_jacobians";
   }
   return "?";
 }
 
 namespace {
+/// The quantities the protocol's dynamics kind carries (the kinematics not yet).
 constexpr dynamics_quantity all_quantities[] = {dynamics_quantity::mass_matrix, dynamics_quantity::bias,
                                                 dynamics_quantity::inverse, dynamics_quantity::forward};
 
