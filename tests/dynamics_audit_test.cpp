@@ -300,8 +300,9 @@ TEST(dynamics_audit, every_library_with_kinematics_gives_the_arms_frames_and_jac
   x.qddot = Eigen::Vector2d(-0.5, 2.0);
   x.tau = Eigen::Vector2d(3.0, -1.0);
   const auto [poses, jacobians] = arm_kinematics(l1, Eigen::Vector2d(x.q));
-  // The reference itself, and every library that offers them, within 16 n eps of the scale
-  // max(1, l1 + c2) of the closed form, which rounds its sines and cosines once.
+  // The reference within 2 eps of the scale max(1, l1 + c2) of the closed form (which rounds
+  // its sines and cosines once, and l1 times them once); every library that offers them
+  // within its budget, 16 n eps of the scale, of it.
   for (const auto q : {audit::dynamics_quantity::frame_poses, audit::dynamics_quantity::frame_jacobians}) {
     const audit::dynamics_residual ref = audit::reference_only(q, r, x);
     EXPECT_EQ(ref.scale, l1 + 0.375);
