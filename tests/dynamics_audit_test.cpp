@@ -1,7 +1,7 @@
 // The dynamics audit: a library against the exact Lagrangian -- every library this build
 // found against the two-link arm's closed form and on random robots, wrong libraries caught
-// (the budget, the scales, a library that holds another robot, a joint's armature and
-// damping), a campaign's records.
+// (the budget, the scales, a library that holds another robot), a campaign's records. A
+// joint's armature and damping: joint_terms_test.cpp.
 
 #include <gtest/gtest.h>
 
@@ -22,55 +22,19 @@
 #include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/harness/generators.hpp"
 #include "mechcheck/robots.hpp"
+#include "dynamics_fakes.hpp"
 #include "two_link_arm.hpp"
 
 namespace dynamics_audit_test {
 using namespace mechcheck;
 namespace rb = mechcheck::robots;
 namespace audit = mechcheck::audit;
+using dynamics_fakes::disagrees;
+using dynamics_fakes::wrong_library;
 using robots_test::arm_closed_form;
 using robots_test::arm_terms;
 using robots_test::seeded_check;
 using robots_test::two_link_arm;
-
-/// A library that computes with a description changed by `wrong`: what the check must catch.
-/// A library computing exactly (robots/dynamics.hpp in double) with the robot changed by
-/// `wrong`; with `declares`, it says it holds the changed robot (held_robot).
-audit::dynamics_library wrong_library(std::function<void(rb::robot&)> wrong, bool declares = false) {
-  struct model final : audit::dynamics_model {
-    rb::robot held;
-    rb::robot_model<double> m;
-    bool declares;
-    model(rb::robot r, bool d) : held(r), m(std::move(r)), declares(d) {}
-    std::optional<rb::robot> held_robot() const override { return declares ? std::optional<rb::robot>(held) : std::nullopt; }
-    std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override { return rb::mass_matrix(m, q); }
-    std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd& q, const Eigen::VectorXd& v) override {
-      return rb::bias_forces(m, q, v);
-    }
-    std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                                           const Eigen::VectorXd& a) override {
-      return rb::inverse_dynamics(m, q, v, a);
-    }
-    std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                                           const Eigen::VectorXd& t) override {
-      return rb::forward_dynamics(m, q, v, t);
-    }
-  };
-  audit::dynamics_library l;
-  l.name = "wrong";
-  l.sets_armature = l.sets_damping = true;  // it computes with the robot's own numbers
-  l.load = [wrong, declares](const rb::robot& r) -> std::unique_ptr<audit::dynamics_model> {
-    rb::robot changed = r;
-    wrong(changed);
-    return std::make_unique<model>(changed, declares);
-  };
-  return l;
-}
-
-/// Whether any quantity of a check is outside its budget.
-bool disagrees(const audit::dynamics_check& c) {
-  return std::any_of(c.residuals.begin(), c.residuals.end(), [](const audit::dynamics_residual& r) { return !r.within(); });
-}
 
 using audit::state_of;
 using robots_test::free_body;
@@ -177,96 +141,6 @@ TEST(dynamics_audit, every_library_gives_the_two_link_arms_closed_form) {
       EXPECT_TRUE(res.within()) << library.name << ": " << audit::dynamics_quantity_name(res.quantity) << ": "
                                 << res.residual << " eps of budget " << res.budget;
   }
-}
-
-TEST(dynamics_audit, armature_and_damping_join_the_closed_form_where_a_library_sets_them_and_are_refused_where_not) {
-  // A rotor's armature a adds a qdot^2 / 2 to T, so a to M's diagonal; viscous damping b adds
-  // b qdot to h (the generalized force -b qdot). The arm's closed form with both, in the
-  // reference and in every library whose adapter sets them (MuJoCo both, its URDF import the
-  // damping, KDL the armature: its solvers read no damping), on the arm with both, with the
-  // armature alone and with the damping alone; the others refuse it naming the joint and the term.
-  const double m1 = 2, m2 = 1.5, l1 = 1, c1 = 0.5, c2 = 0.375, i1 = 0.25, i2 = 0.0625, g = 9.81;
-  const Eigen::Vector2d armature(0.125, 0.03125), damping(0.5, 0.25);
-  rb::robot r = two_link_arm(m1, m2, l1, c1, c2, i1, i2);
-  for (int k = 0; k < 2; ++k) {
-    r.joints[std::size_t(k)].armature = armature(k);
-    r.joints[std::size_t(k)].damping = damping(k);
-  }
-  audit::dynamics_state x;
-  x.q = Eigen::Vector2d(0.3, -0.7);
-  x.qdot = Eigen::Vector2d(1.1, 0.4);
-  x.qddot = Eigen::Vector2d(-0.5, 2.0);
-  x.tau = Eigen::Vector2d(3.0, -1.0);
-  arm_closed_form want = arm_terms(m1, m2, l1, c1, c2, i1, i2, g, Eigen::Vector2d(x.q), Eigen::Vector2d(x.qdot));
-  want.m.diagonal() += armature;
-  want.h += damping.cwiseProduct(Eigen::Vector2d(x.qdot));
-  constexpr double eps = 0x1p-52;
-  const rb::robot_model<double> md(r);
-  const rb::motion_terms<double> d = rb::motion_terms_at(md, x.q, x.qdot);
-  EXPECT_LE((d.mass_matrix - want.m).cwiseAbs().maxCoeff(), 32 * eps * want.m.cwiseAbs().maxCoeff());
-  EXPECT_LE((d.bias - want.h).cwiseAbs().maxCoeff(), 32 * eps * (m1 + m2) * g * 2);
-  // The same in URDF: <dynamics damping friction armature> read back to the same doubles.
-  rb::robot with_friction = r;
-  with_friction.joints[0].friction = 0.75;
-  const rb::robot back = audit::parse_urdf(audit::to_urdf(with_friction), "arm.urdf");
-  for (std::size_t k = 0; k < 2; ++k) {
-    EXPECT_EQ(back.joints[k].armature, r.joints[k].armature);
-    EXPECT_EQ(back.joints[k].damping, r.joints[k].damping);
-  }
-  EXPECT_EQ(back.joints[0].friction, 0.75);
-  ASSERT_EQ(back.readings.size(), 1u);
-  EXPECT_NE(back.readings[0].find("friction 0.75"), std::string::npos) << back.readings[0];
-  rb::robot armature_only = r, damping_only = r;
-  for (rb::joint& j : armature_only.joints) j.damping = 0;
-  for (rb::joint& j : damping_only.joints) j.armature = 0;
-  int held = 0;
-  for (const audit::dynamics_library& library : audit::dynamics_found()) {
-    for (const rb::robot* robot : {&r, &armature_only, &damping_only}) {
-      const bool sets = (robot == &damping_only || library.sets_armature) &&
-                        (robot == &armature_only || library.sets_damping);
-      const audit::dynamics_check c = audit::check_dynamics(library, *robot, x);
-      if (!sets) {
-        EXPECT_TRUE(c.residuals.empty()) << library.name;
-        EXPECT_NE(c.refused.find("joint shoulder has "), std::string::npos) << library.name << ": " << c.refused;
-        EXPECT_NE(c.refused.find(library.name), std::string::npos) << c.refused;
-        continue;
-      }
-      ASSERT_TRUE(c.refused.empty()) << library.name << ": " << c.refused;
-      ASSERT_FALSE(c.residuals.empty()) << library.name;
-      ++held;
-      // A library that says which robot it holds (MuJoCo, read back from its compiled model) is
-      // judged on that robot: its joint terms must be the given ones, or a term its model
-      // builder dropped would pass unseen.
-      if (const auto kept = library.load(*robot)->held_robot())
-        for (const rb::joint& j : robot->joints)
-          for (const rb::joint& k : kept->joints)
-            if (k.name == j.name) {
-              EXPECT_EQ(k.armature, j.armature) << library.name << ": joint " << j.name;
-              EXPECT_EQ(k.damping, j.damping) << library.name << ": joint " << j.name;
-            }
-      for (const auto& res : c.residuals)
-        EXPECT_TRUE(res.within()) << library.name << ": " << audit::dynamics_quantity_name(res.quantity) << ": "
-                                  << res.residual << " eps of budget " << res.budget;
-    }
-  }
-#ifdef MECHCHECK_HAVE_MUJOCO
-  EXPECT_GE(held, 4) << "MuJoCo sets both terms, its URDF import the damping";
-#else
-  (void)held;
-#endif
-  // Wrong variants: the armature added twice, the damping dropped.
-  const auto fails = [&](const char* what, std::function<void(rb::robot&)> change) {
-    EXPECT_TRUE(disagrees(audit::check_dynamics(wrong_library(change), r, x))) << what;
-  };
-  fails("the armature added twice", [](rb::robot& w) {
-    for (rb::joint& j : w.joints) j.armature *= 2;
-  });
-  fails("the damping dropped", [](rb::robot& w) {
-    for (rb::joint& j : w.joints) j.damping = 0;
-  });
-  const audit::dynamics_check right = audit::check_dynamics(wrong_library([](rb::robot&) {}), r, x);
-  ASSERT_EQ(right.residuals.size(), 4u);
-  for (const auto& res : right.residuals) EXPECT_TRUE(res.within()) << res.residual;
 }
 
 /// The kinematics of the arm in closed form: the frames of base, upper arm and forearm (12 x 3,

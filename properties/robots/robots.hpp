@@ -49,18 +49,13 @@ robot_sample<T> draw_robot() {
   return robot_sample<T>(*gen::robot_cases(4));
 }
 
-/// A random robot of at most max_links links whose every moving joint draws an armature in [0, 1/4]
-/// kg m^2 (or kg) and a damping in [0, 2] N m s/rad (or N s/m), dyadic (exact in every tier),
-/// zero about a third of the time each: one generated value, so that a counterexample prints
-/// the robot with its terms.
+/// A random robot of at most max_links links whose every moving joint draws an armature and a
+/// damping (gen::draw_joint_terms): one generated value, so that a counterexample prints the
+/// robot with its terms.
 inline rc::Gen<gen::robot_case> dressed_robot_cases(int max_links = 4) {
   return rc::gen::exec([max_links] {
     gen::robot_case c = *gen::robot_cases(max_links);
-    for (rb::joint& j : c.robot.joints) {
-      if (j.type == rb::joint_type::fixed) continue;
-      j.armature = std::max(0, *rc::gen::inRange(-8, 17)) / 64.0;
-      j.damping = std::max(0, *rc::gen::inRange(-16, 33)) / 16.0;
-    }
+    gen::draw_joint_terms(c.robot, true, true);
     return c;
   });
 }

@@ -409,6 +409,14 @@ rc::Gen<robot_case> robot_cases(int max_links) {
   });
 }
 
+void draw_joint_terms(robots::robot& r, bool armature, bool damping) {
+  for (robots::joint& j : r.joints) {
+    if (j.type == robots::joint_type::fixed) continue;
+    if (armature) j.armature = std::max(0, *rc::gen::inRange(-8, 17)) / 64.0;
+    if (damping) j.damping = std::max(0, *rc::gen::inRange(-16, 33)) / 16.0;
+  }
+}
+
 void showValue(const floating_robot_case& c, std::ostream& os) {
   os << "on a floating base";
   if (const auto& b = c.joints.robot.links.front().body)

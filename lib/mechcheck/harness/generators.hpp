@@ -326,6 +326,12 @@ void showValue(const robot_case& c, std::ostream& os);
 
 rc::Gen<robot_case> robot_cases(int max_links = 8);
 
+/// Inside an rc::gen::exec: every moving joint of `r` draws, where asked, an armature in
+/// [0, 1/4] kg m^2 (or kg) and a damping in [0, 2] N m s/rad (or N s/m) (robots::joint),
+/// dyadic (exact in every tier), zero about a third of the time each; shrinks towards none.
+/// Drawn after the robot, so that the robot is the one drawn without them.
+void draw_joint_terms(robots::robot& r, bool armature, bool damping);
+
 /// A robot of `joints` on a floating base (robots/floating.hpp): the root link (a torso) given a
 /// body of its own; the base's pose (xyz in [-1, 1], rpy in [-3.14, 3.14]), its twist
 /// (v_b; w_b), the twist's rate and a wrench (f_b; n_b) on it, each component in [-4, 4].

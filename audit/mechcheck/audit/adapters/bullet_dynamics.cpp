@@ -162,6 +162,8 @@ dynamics_library dynamics() {
       "rotation and the pivot offsets in those frames; the root link is the fixed base. Its mass matrix, bias "
       "and inverse dynamics are not offered: the core library has none, and Debian's libbullet-extras-dev "
       "ships the BulletInverseDynamics libraries without their .hpp headers";
+  l.no_joint_terms = "Bullet has no rotor inertia, and btMultiBodyLink::m_jointDamping is, in its own words, "
+                     "\"unused for now, it is set by a URDF loader. User can apply manual damping\" (btMultiBodyLink.h)";
   l.load = [](const robots::robot& r) -> std::unique_ptr<dynamics_model> { return std::make_unique<model>(r); };
   return l;
 }

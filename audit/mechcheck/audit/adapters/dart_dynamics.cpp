@@ -7,6 +7,7 @@
 #include <dart/dynamics/Skeleton.hpp>
 #include <dart/dynamics/WeldJoint.hpp>
 
+#include <cmath>
 #include <memory>
 
 #include <Eigen/Geometry>
@@ -15,6 +16,8 @@
 
 #include "mechcheck/audit/adapters/dart_engine.hpp"
 #include "mechcheck/audit/adapters/detail/dart_robot.hpp"
+#include "mechcheck/core/errors.hpp"
+#include "mechcheck/core/format.hpp"
 #include "mechcheck/robots/dynamics.hpp"
 
 namespace mechcheck::audit::dart_engine {
@@ -108,6 +111,7 @@ SkeletonPtr robot_skeleton(const robots::robot& r, coordinate_order& order) {
                                                                 child_body);
         break;
     }
+    if (t.coordinate[std::size_t(k)] >= 0) made.first->setDampingCoefficient(0, j.damping);
     made.second->setInertia(inertia_of(child));
     body[std::size_t(t.child_link[std::size_t(k)])] = made.second;
     if (const int c = t.coordinate[std::size_t(k)]; c >= 0)
@@ -122,8 +126,9 @@ SkeletonPtr robot_skeleton(const robots::robot& r, coordinate_order& order) {
 namespace {
 class dart_model final : public dynamics_model {
  public:
-  explicit dart_model(const robots::robot& r)
+  dart_model(const robots::robot& r, double time_step)
       : skeleton_(robot_skeleton(r, order_)), n_(static_cast<int>(order_.order.size())), floating_(r.floating) {
+    skeleton_->setTimeStep(time_step);
     for (const robots::link& l : r.links) {
       BodyNode* b = skeleton_->getBodyNode(l.name);
       if (!b) throw robot_refused("dart: the Skeleton has no BodyNode " + l.name);
@@ -138,14 +143,21 @@ class dart_model final : public dynamics_model {
   std::optional<Eigen::VectorXd> bias(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) override {
     set_positions(q);
     skeleton_->setVelocities(in_dart(qdot));
-    return from_dart(skeleton_->getCoriolisAndGravityForces());
+    // C + N, and the joints' damping force -d qdot as Joint.hpp gives it (DART keeps no
+    // vector of it), each coefficient read back from the Skeleton.
+    Eigen::VectorXd h = skeleton_->getCoriolisAndGravityForces();
+    for (int i = 0; i < n_; ++i) {
+      const DegreeOfFreedom* dof = skeleton_->getDof(static_cast<std::size_t>(i));
+      h(i) += dof->getDampingCoefficient() * dof->getVelocity();
+    }
+    return from_dart(h);
   }
   std::optional<Eigen::VectorXd> inverse(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                                          const Eigen::VectorXd& qddot) override {
     set_positions(q);
     skeleton_->setVelocities(in_dart(qdot));
     skeleton_->setAccelerations(in_dart(qddot));
-    skeleton_->computeInverseDynamics(false, false, false);
+    skeleton_->computeInverseDynamics(false, true, false);
     return from_dart(skeleton_->getForces());
   }
   std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
@@ -210,24 +222,41 @@ class dart_model final : public dynamics_model {
 };
 }  // namespace
 
-dynamics_library dynamics() {
+// DART applies a joint's damping implicitly, -d (qdot + h qddot) with the Skeleton's time step
+// h, in its forward and inverse dynamics alike (GenericJoint's updateForceID and
+// updateInvProjArtInertiaImplicitDynamic): the equations of motion are its limit h -> 0. At
+// h = 2^-80 s (DART asserts h > 0) the term h d qddot is under half an ulp of the force's
+// scale (at least 1) while d |qddot| < 2^27.
+dynamics_library dynamics(double time_step) {
+  if (!(time_step > 0) || !std::isfinite(time_step))
+    throw domain_error("dart dynamics: the Skeleton's time step must be positive and finite, got " + to_text(time_step));
   dynamics_library l;
   l.name = "dart";
   l.origin = "DART " + version() +
              " (libdart6.12): Skeleton::getMassMatrix, getCoriolisAndGravityForces (C + N of DART's M qddot + C + "
-             "N = tau, Skeleton.hpp), computeInverseDynamics without external, damping or spring forces, "
+             "N = tau, Skeleton.hpp), computeInverseDynamics with damping forces and without external or spring forces, "
              "computeForwardDynamics; the Skeleton built from the description: a BodyNode per link with "
              "Inertia(mass, centre of mass, R_o I R_o^T) in its frame (mass 0 for a link without one, but for the "
              "root: welded to the world, it keeps DART's default mass 1, which never enters the equations), a "
              "RevoluteJoint or PrismaticJoint with T_ParentBodyToJoint the joint's origin and the axis in the "
-             "child's frame, a WeldJoint for a fixed joint and for the root to the world; no joint damping, "
-             "spring, Coulomb friction or enforced limit (DART 6.12 has no rotor inertia); a floating base on a "
+             "child's frame, a WeldJoint for a fixed joint and for the root to the world; a joint's damping by "
+             "setDampingCoefficient, in the bias as d qdot (the force -d qdot of Joint.hpp, d read back by "
+             "getDampingCoefficient) and in computeInverseDynamics and computeForwardDynamics, which apply it "
+             "implicitly, -d (qdot + h qddot), with the Skeleton's time step h = " +
+             (time_step == 0x1p-80 ? std::string("2^-80 s (the term h d qddot under rounding)")
+                                   : to_text(time_step) + " s (the term h d qddot in its forces)") +
+             "; no spring, Coulomb friction or enforced limit, and no rotor inertia (DART 6.12 has "
+             "none: a robot with an armature is refused); a floating base on a "
              "FreeJoint (positions: convertToPositions of the root's transform; velocities: the root's spatial "
              "velocity in its own frame, angular first, (w_b; v_b), and their rates; forces (n_b; f_b)); each "
              "link's frame by BodyNode::getWorldTransform, its Jacobian by Skeleton::getWorldJacobian (the "
              "BodyNode's origin, rows (omega; v) in the world)";
   l.no_floating_base.clear();
-  l.load = [](const robots::robot& r) -> std::unique_ptr<dynamics_model> { return std::make_unique<dart_model>(r); };
+  l.sets_damping = true;
+  l.no_joint_terms = "DART 6.12 has no rotor inertia (its joints carry damping, spring and Coulomb friction only)";
+  l.load = [time_step](const robots::robot& r) -> std::unique_ptr<dynamics_model> {
+    return std::make_unique<dart_model>(r, time_step);
+  };
   return l;
 }
 

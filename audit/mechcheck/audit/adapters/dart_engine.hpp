@@ -43,7 +43,11 @@ std::vector<engine_integrator> integrators();
 /// How DART computes the inertia of its shapes (engines.hpp, shapes()).
 engine_shapes shapes();
 
-/// Skeleton's equations of motion, on a Skeleton built from the description.
-dynamics_library dynamics();
+/// Skeleton's equations of motion, on a Skeleton built from the description. DART applies a
+/// joint's damping implicitly, -d (qdot + h qddot), with the Skeleton's time step h, in its
+/// forward and inverse dynamics alike: the default h = 2^-80 s puts that term under rounding,
+/// so that they are the equations of motion; at DART's own default (0.001 s) they carry h d
+/// qddot.
+dynamics_library dynamics(double time_step = 0x1p-80);
 
 }  // namespace mechcheck::audit::dart_engine

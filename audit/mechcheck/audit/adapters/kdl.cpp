@@ -212,6 +212,7 @@ dynamics_library kdl_dynamics() {
              "damping is refused; each link's frame by TreeFkSolverPos_recursive::JntToCart and its Jacobian by "
              "TreeJntToJacSolver::JntToJac (the segment's tip, in the base frame), on a chain and a tree alike";
   l.sets_armature = true;
+  l.no_joint_terms = "KDL 1.5.1 keeps a Joint's damping and none of its solvers reads it";
   l.no_floating_base = "KDL has no floating base: a KDL::Chain's and a KDL::Tree's root is the world's frame, and "
                        "its Joint::JointType (RotAxis, RotX..Z, TransAxis, TransX..Z, Fixed; kdl/joint.hpp) has no joint of six "
                        "degrees of freedom";

@@ -376,6 +376,7 @@ dynamics_library urdf_dynamics() {
                  },
                  false);
   l.no_floating_base = "its adapter writes no floating joint for MuJoCo's URDF import";
+  l.no_joint_terms = "URDF has no armature";
   return l;
 }
 

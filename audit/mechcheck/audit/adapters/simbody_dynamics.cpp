@@ -36,6 +36,7 @@ simbody_bridge::robot_setup setup_of(const robots::robot& r, const robots::tree&
       copy(robots::rpy_rotation<double>(j->origin.rpy), b.rotation);
       copy(j->origin.xyz, b.position);
       copy(j->axis, b.axis);
+      b.damping = j->damping;
     }
     if (const auto& in = r.links[std::size_t(link)].body) {
       const Eigen::Matrix3d ro = robots::rpy_rotation<double>(in->origin.rpy);
@@ -167,8 +168,10 @@ dynamics_library dynamics() {
   l.origin = "Simbody " + version() +
              " (libsimbody-dev): SimbodyMatterSubsystem::calcM; calcResidualForceIgnoringConstraints (f_residual = "
              "M udot + f_inertial - f_applied) at udot = 0 for the bias and at qddot for inverse dynamics, and "
-             "calcAccelerationIgnoringConstraints for forward dynamics, the applied forces Force::Gravity's body "
-             "forces (and tau); the system built from the description: a Body::Rigid per link with "
+             "calcAccelerationIgnoringConstraints for forward dynamics, the applied forces the system's at "
+             "Stage::Dynamics (Force::Gravity's body forces, a Force::MobilityLinearDamper's -c u on each joint "
+             "with damping c) and tau; no rotor inertia (Simbody has none: a robot with an armature is "
+             "refused); the system built from the description: a Body::Rigid per link with "
              "MassProperties about its origin (the central inertia R_o I R_o^T shifted by "
              "Inertia::shiftFromMassCenter), a MobilizedBody::Pin or Slider whose frames F (at the joint's "
              "origin) and M turn z (Pin) or x (Slider) onto the axis, a Weld for a fixed joint and the root; u = "
@@ -177,6 +180,8 @@ dynamics_library dynamics() {
              "ground's frame, R w_b and R v_b, their rates R wdot_b and R (vdot_b + w_b x v_b); forces and M "
              "through the same map)";
   l.no_floating_base.clear();
+  l.sets_damping = true;
+  l.no_joint_terms = "Simbody has no rotor inertia (its mobilizers carry none; a damper is a force element)";
   l.load = [](const robots::robot& r) -> std::unique_ptr<dynamics_model> { return std::make_unique<model>(r); };
   return l;
 }

@@ -175,14 +175,14 @@ Eigen::Matrix3d base_rotation(const Eigen::VectorXd& q) {
 }
 
 std::string unset_joint_terms(const robots::robot& robot, const std::string& library, bool sets_armature,
-                              bool sets_damping) {
+                              bool sets_damping, const std::string& why) {
   for (const robots::joint& j : robot.joints) {
     if (j.type == robots::joint_type::fixed) continue;
     for (const auto& [what, value, set] : {std::tuple{"armature (rotor inertia)", j.armature, sets_armature},
                                            std::tuple{"damping", j.damping, sets_damping}})
       if (value > 0 && !set)
         return "joint " + j.name + " has " + what + " " + to_text(value) + ", which the adapter of " + library +
-               " does not set in it";
+               " does not set in it" + (why.empty() ? "" : ": " + why);
   }
   return {};
 }
@@ -255,7 +255,8 @@ kinematic_terms kinematics_of(const robots::robot& robot, const dynamics_state& 
 
 dynamics_check check_dynamics(const dynamics_library& library, const robots::robot& robot, const dynamics_state& x) {
   dynamics_check out;
-  out.refused = unset_joint_terms(robot, library.name, library.sets_armature, library.sets_damping);
+  out.refused =
+      unset_joint_terms(robot, library.name, library.sets_armature, library.sets_damping, library.no_joint_terms);
   if (out.refused.empty() && robot.floating && !library.no_floating_base.empty())
     out.refused = library.name + ": " + library.no_floating_base;
   if (!out.refused.empty()) return out;
@@ -355,7 +356,12 @@ reference_terms reference_terms_at(const robots::robot& robot, const dynamics_st
   const robots::term_scale terms = robots::term_scales(m, joints, robot.floating ? x.q.head<3>().norm() : 0.0);
   const double m_max = std::max(max_abs(mass), terms.inertia), v = max_abs(x.qdot), a = max_abs(x.qddot);
   out.scale_m = m_max;
-  out.scale_h = std::max({max_abs(gravity), terms.gravity, max_abs(Eigen::MatrixXd(bias - gravity)), m_max * v * v});
+  // The joints' damping forces d qdot enter h as terms of their own (a library adds them).
+  double damped = 0;
+  for (Eigen::Index k = 0; k < n; ++k)
+    damped = std::max(damped, static_cast<double>(m.damping[std::size_t(k)]) * std::abs(x.qdot(base + k)));
+  out.scale_h =
+      std::max({max_abs(gravity), terms.gravity, max_abs(Eigen::MatrixXd(bias - gravity)), m_max * v * v, damped});
   out.scale_tau = std::max(out.scale_h, m_max * a);
   const Eigen::MatrixXd inv = n + base ? Eigen::MatrixXd(mass.inverse()) : Eigen::MatrixXd();
   // qddot = M^-1 (tau - h) with M's error relative to its terms (I, which a moment about an

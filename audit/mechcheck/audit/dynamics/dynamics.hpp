@@ -122,6 +122,9 @@ struct dynamics_library {
   /// nonzero armature or damping where the adapter sets none is refused by name, never held
   /// to a reference the library was not given.
   bool sets_armature = false, sets_damping = false;
+  /// Why a term it does not set is not set (the library has no such term, or ignores it),
+  /// said in the refusal.
+  std::string no_joint_terms;
   /// Why the library, or its adapter, takes no robot on a floating base; empty where it takes
   /// them (through its own convention for the base's coordinates, which its origin names).
   std::string no_floating_base = "its adapter builds robots fixed to the world only";
@@ -230,9 +233,9 @@ struct dynamics_check {
 
 /// Why a library whose adapter sets the joints' armature or damping only as the flags say
 /// refuses the robot ("joint J has damping 0.5, which the adapter of L does not set in
-/// it"); empty when it takes it.
+/// it: WHY", why from the library's no_joint_terms); empty when it takes it.
 std::string unset_joint_terms(const robots::robot& robot, const std::string& library, bool sets_armature,
-                              bool sets_damping);
+                              bool sets_damping, const std::string& why = {});
 
 /// The library against the exact Lagrangian on one robot and state. A library's failure
 /// (its error code, a non-finite value) is an error naming it.
@@ -257,8 +260,10 @@ dynamics_state state_of(const generators::robot_case& c);
 /// The campaigns' random robots: fixed and floating bases alike, a draw that shrinks towards
 /// the fixed one; a floating robot is floating_robot_cases' (its root given a body; the base's
 /// pose, twist, twist rate and wrench) with its state in dynamics_state's layout, the
-/// quaternion of the base's roll, pitch and yaw rounded to double.
-rc::Gen<generators::robot_case> dynamics_robot_cases(int max_links);
+/// quaternion of the base's roll, pitch and yaw rounded to double; the joints draw an armature
+/// and a damping where asked, drawn after the rest (generators::draw_joint_terms): the same
+/// robots with them or without.
+rc::Gen<generators::robot_case> dynamics_robot_cases(int max_links, bool armature = false, bool damping = false);
 
 /// How a campaign checks one robot at one state (check_dynamics for a dynamics_library).
 using dynamics_checker = std::function<dynamics_check(const robots::robot&, const dynamics_state&)>;
@@ -275,6 +280,9 @@ struct dynamics_campaign {
   std::string first_refusal;  ///< the library's reason for the first robot it refused
   std::uint64_t seed = 0;
   int max_links = 8;
+  /// What the random robots' joints carry beside their inertia (dynamics_options' armature
+  /// and damping): "an armature and a damping", "an armature", "a damping"; "" none.
+  std::string joint_terms;
   struct quantity_figure {
     dynamics_quantity quantity;
     int checked = 0;
@@ -314,6 +322,9 @@ struct dynamics_options {
   int max_links = 8;
   std::function<void(const std::string&)> progress;
   std::string urdf_file;  ///< a user's robot: its file, for the reproduction command
+  /// The random robots' joints draw an armature, a damping (dynamics_robot_cases): the terms
+  /// the library sets (run_dynamics_campaign sets them from its flags).
+  bool armature = false, damping = false;
 };
 
 dynamics_campaign run_dynamics_campaign(const dynamics_library& library, const dynamics_options& options);

@@ -68,6 +68,11 @@ dynamics_campaign campaign(const std::string& name, const std::string& origin, c
   if (user) c.unit = "states";
   c.seed = opt.seed;
   c.max_links = opt.max_links;
+  if (!user)
+    c.joint_terms = opt.armature && opt.damping ? "an armature and a damping"
+                    : opt.armature              ? "an armature"
+                    : opt.damping               ? "a damping"
+                                                : "";
   for (const auto q : all_dynamics_quantities)
     c.figures.push_back({q, 0, 0, 0});
   bool failed = false;
@@ -153,7 +158,7 @@ dynamics_campaign run_dynamics_checker(const std::string& name, const std::strin
       throw domain_error("run_dynamics: max_links must be in 1..32, got " + std::to_string(opt.max_links));
     const int links = opt.max_links;
     // Fixed and floating bases alike (a draw that shrinks towards the fixed one).
-    const rc::Gen<generators::robot_case> cases = dynamics_robot_cases(links);
+    const rc::Gen<generators::robot_case> cases = dynamics_robot_cases(links, opt.armature, opt.damping);
     return campaign(name, origin, check, opt, [cases] { return *cases; }, selector);
   }
   require_dynamics_size(*robot);
@@ -194,10 +199,17 @@ void require_dynamics_size(const robots::robot& robot) {
                           "a state (docs/audit.md, \"Robots of any size\")");
 }
 
-rc::Gen<generators::robot_case> dynamics_robot_cases(int max_links) {
-  return rc::gen::exec([max_links] {
-    if (!*rc::gen::element(false, true)) return *generators::robot_cases(max_links);
-    return floated(*generators::floating_robot_cases(generators::robot_cases(max_links)));
+rc::Gen<generators::robot_case> dynamics_robot_cases(int max_links, bool armature, bool damping) {
+  return rc::gen::exec([max_links, armature, damping] {
+    // The joints' terms drawn last: a library's robots are the same with them or without.
+    if (!*rc::gen::element(false, true)) {
+      generators::robot_case c = *generators::robot_cases(max_links);
+      generators::draw_joint_terms(c.robot, armature, damping);
+      return c;
+    }
+    generators::floating_robot_case f = *generators::floating_robot_cases(generators::robot_cases(max_links));
+    generators::draw_joint_terms(f.joints.robot, armature, damping);
+    return floated(f);
   });
 }
 
@@ -208,7 +220,10 @@ dynamics_checker checker_of(const dynamics_library& library) {
 }  // namespace
 
 dynamics_campaign run_dynamics_campaign(const dynamics_library& library, const dynamics_options& opt) {
-  return run_dynamics_checker(library.name, library.origin, checker_of(library), opt, nullptr, library.selector);
+  dynamics_options dressed = opt;
+  dressed.armature = library.sets_armature;
+  dressed.damping = library.sets_damping;
+  return run_dynamics_checker(library.name, library.origin, checker_of(library), dressed, nullptr, library.selector);
 }
 
 dynamics_campaign run_dynamics_on(const dynamics_library& library, const robots::robot& robot, const dynamics_options& opt) {
@@ -289,6 +304,7 @@ void print_dynamics(std::ostream& out, const std::vector<dynamics_campaign>& cam
       out << line;
     }
     if (const std::string f = floating_line(c); !f.empty()) out << "  " << c.library << " " << f << "\n";
+    if (!c.joint_terms.empty()) out << "  " << c.library << "'s robots: each moving joint draws " << c.joint_terms << "\n";
     if (c.refused) {
       std::string first = c.first_refusal;  // a library's message may run over lines: one here
       std::replace(first.begin(), first.end(), '\n', ' ');
@@ -322,6 +338,7 @@ std::vector<std::string> write_dynamics_report(const std::string& directory, con
     nlohmann::ordered_json e = {{"library", c.library}, {"origin", c.origin}, {"seed", c.seed}, {"robots", c.robots},
                                 {"refused", c.refused}, {"max_links", c.max_links}};
     if (c.refused) e["first_refusal"] = c.first_refusal;
+    if (!c.joint_terms.empty()) e["joint_terms"] = c.joint_terms;
     nlohmann::ordered_json fig = nlohmann::ordered_json::array();
     for (const auto& f : c.figures) {
       fig.push_back({{"quantity", dynamics_quantity_name(f.quantity)}, {"checked", f.checked}, {"largest", f.largest},
@@ -363,6 +380,15 @@ std::vector<std::string> write_dynamics_report(const std::string& directory, con
          << " eps of the scale (the robot where it is largest: the file held_robot.robot of dynamics.json).\n";
   for (const auto& c : campaigns)
     if (const std::string f = floating_line(c); !f.empty()) md << "\n" << c.library << " " << f << ".\n";
+  // The joints' terms: each library's random robots carry those its adapter sets (a robot
+  // with one it does not set would be refused); the same robots otherwise.
+  std::string terms;
+  for (const auto& c : campaigns)
+    if (!c.joint_terms.empty()) terms += (terms.empty() ? "" : "; ") + c.library + "'s " + c.joint_terms;
+  if (!terms.empty())
+    md << "\nThe random robots' moving joints draw the terms each library's adapter sets (an armature in [0, 1/4], a "
+          "damping in [0, 2], each zero a third of the time, drawn after the rest of the robot): "
+       << terms << "; the others' none.\n";
   for (const auto& r : readings_of(campaigns)) md << "\nReading: " << r << ".\n";
   md << after.str();
   // Per quantity, each library's largest residual against the robots' moving joints, and

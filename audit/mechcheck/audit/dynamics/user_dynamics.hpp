@@ -176,7 +176,10 @@ struct templated_dynamics {
   template <class T>
   dynamics_campaign run(const dynamics_options& options, const robots::robot* robot = nullptr) const {
     const dynamics_checker check = [this](const robots::robot& r, const dynamics_state& x) { return this->template check<T>(r, x); };
-    return run_dynamics_checker(name + " (" + std::string(tier_traits<T>::name) + ")", origin, check, options, robot);
+    dynamics_options dressed = options;  // the joint terms Model sets
+    dressed.armature = sets_armature;
+    dressed.damping = sets_damping;
+    return run_dynamics_checker(name + " (" + std::string(tier_traits<T>::name) + ")", origin, check, dressed, robot);
   }
 
   /// The campaign in every tier: double, float128, mpfr50 (the same robots and states: one

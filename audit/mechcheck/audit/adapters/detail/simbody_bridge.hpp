@@ -33,6 +33,7 @@ struct robot_setup {
     double mass = 0;
     double com[3] = {0, 0, 0};                         ///< centre of mass in the body's frame
     double inertia[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};   ///< about the centre of mass, row-major
+    double damping = 0;  ///< a Pin's or Slider's viscous damping (Force::MobilityLinearDamper)
   };
   double gravity[3] = {0, 0, 0};
   std::vector<body> bodies;

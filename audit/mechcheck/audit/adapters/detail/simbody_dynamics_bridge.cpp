@@ -64,6 +64,12 @@ struct robot_dynamics::impl {
   explicit impl(const robot_setup& r)
       : moving(build_robot(r, matter)), gravity(forces, matter, vec3(r.gravity)),
         free(!r.bodies.empty() && r.bodies.front().joint == 3) {
+    std::size_t k = 0;
+    for (const auto& b : r.bodies)
+      if (b.joint == 0 || b.joint == 1 || b.joint == 3) {
+        if (b.damping > 0) Force::MobilityLinearDamper(forces, moving[k], MobilizerUIndex(0), b.damping);
+        ++k;
+      }
     state = system.realizeTopology();
     for (const MobilizedBody& m : moving)
       for (int i = 0; i < m.getNumU(state); ++i) u.push_back(UIndex(m.getFirstUIndex(state) + i));
@@ -89,6 +95,10 @@ struct robot_dynamics::impl {
     for (std::size_t k = 0; k < u.size(); ++k) out[u[k]] = x[k];
     return out;
   }
+  /// The force elements' applied forces (gravity's body forces, the dampers' mobility
+  /// forces -c u), summed by the system at Stage::Dynamics.
+  const Vector_<SpatialVec>& body_forces() const { return system.getRigidBodyForces(state, Stage::Dynamics); }
+  const Vector& mobility_forces() const { return system.getMobilityForces(state, Stage::Dynamics); }
   void out(const Vector& v, double* x) const {
     for (std::size_t k = 0; k < u.size(); ++k) x[k] = v[u[k]];
   }
@@ -109,31 +119,32 @@ void robot_dynamics::mass_matrix(const double* q, double* m) const {
 }
 
 // f_residual = M udot + f_inertial - f_applied (SimbodyMatterSubsystem.h), the applied
-// forces Force::Gravity's body forces: at udot = 0 the bias h, at udot the inverse dynamics.
+// forces the force elements' (gravity, the dampers): at udot = 0 the bias h, at udot the
+// inverse dynamics.
 void robot_dynamics::bias(const double* q, const double* u, double* h) const {
-  p_->set(q, u, Stage::Velocity);
+  p_->set(q, u, Stage::Dynamics);
   Vector residual;
-  p_->matter.calcResidualForceIgnoringConstraints(p_->state, Vector(), p_->gravity.getBodyForces(p_->state), Vector(),
+  p_->matter.calcResidualForceIgnoringConstraints(p_->state, p_->mobility_forces(), p_->body_forces(), Vector(),
                                                   residual);
   p_->out(residual, h);
 }
 
 void robot_dynamics::inverse(const double* q, const double* u, const double* udot, double* tau) const {
-  p_->set(q, u, Stage::Velocity);
+  p_->set(q, u, Stage::Dynamics);
   Vector residual;
-  p_->matter.calcResidualForceIgnoringConstraints(p_->state, Vector(), p_->gravity.getBodyForces(p_->state),
+  p_->matter.calcResidualForceIgnoringConstraints(p_->state, p_->mobility_forces(), p_->body_forces(),
                                                   p_->mobility(udot), residual);
   p_->out(residual, tau);
 }
 
 // M udot + f_inertial = f_applied (calcAccelerationIgnoringConstraints), f_applied = tau and
-// gravity's body forces.
+// the force elements'.
 void robot_dynamics::forward(const double* q, const double* u, const double* tau, double* udot) const {
   p_->set(q, u, Stage::Dynamics);
   Vector accelerations;
   Vector_<SpatialVec> a_gb;
-  p_->matter.calcAccelerationIgnoringConstraints(p_->state, p_->mobility(tau), p_->gravity.getBodyForces(p_->state),
-                                                 accelerations, a_gb);
+  p_->matter.calcAccelerationIgnoringConstraints(p_->state, p_->mobility(tau) + p_->mobility_forces(),
+                                                 p_->body_forces(), accelerations, a_gb);
   p_->out(accelerations, udot);
 }
 
