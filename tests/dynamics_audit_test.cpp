@@ -130,9 +130,10 @@ TEST(dynamics_audit, every_library_gives_the_two_link_arms_closed_form) {
     ASSERT_TRUE(c.refused.empty()) << library.name << ": " << c.refused;
     // Every library offers forward dynamics; Bullet's core nothing else.
     ASSERT_FALSE(c.residuals.empty()) << library.name;
-    const bool kinematics = library.name == "kdl" || library.name == "mujoco" || library.name == "dart";
-    EXPECT_EQ(c.residuals.size(), library.name == "bullet" ? 1u : kinematics ? 6u : 4u) << library.name;
-    EXPECT_EQ(c.residuals[c.residuals.size() - (kinematics ? 3 : 1)].quantity, audit::dynamics_quantity::forward)
+    // Kinematics: frames and Jacobians in KDL, MuJoCo and DART, Jdot qdot in KDL and DART.
+    const std::size_t kinematics = library.name == "kdl" || library.name == "dart" ? 3 : library.name == "mujoco" ? 2 : 0;
+    EXPECT_EQ(c.residuals.size(), library.name == "bullet" ? 1u : 4u + kinematics) << library.name;
+    EXPECT_EQ(c.residuals[c.residuals.size() - kinematics - 1].quantity, audit::dynamics_quantity::forward)
         << library.name;
     if (c.residuals[0].quantity == audit::dynamics_quantity::mass_matrix)
       EXPECT_LE((c.residuals[0].library - want.m).cwiseAbs().maxCoeff(), 32 * 0x1p-52 * want.m.cwiseAbs().maxCoeff())
@@ -165,6 +166,15 @@ std::pair<Eigen::MatrixXd, Eigen::MatrixXd> arm_kinematics(double l1, const Eige
   return {poses, jacobians};
 }
 
+/// The arm's Jdot qdot (18 x 1, (a_o; alpha) a link): the elbow circles the shoulder, its
+/// acceleration at qddot = 0 the centripetal -qdot1^2 elbow = (l1 sin q1, 0, l1 cos q1) qdot1^2;
+/// every angular acceleration about the fixed y is qddot's, zero.
+Eigen::VectorXd arm_bias_accelerations(double l1, const Eigen::Vector2d& q, const Eigen::Vector2d& qdot) {
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(18);
+  out.segment<3>(12) << l1 * std::sin(q(0)) * qdot(0) * qdot(0), 0, l1 * std::cos(q(0)) * qdot(0) * qdot(0);
+  return out;
+}
+
 TEST(dynamics_audit, every_library_with_kinematics_gives_the_arms_frames_and_jacobians_in_closed_form) {
   const double l1 = 1.25;
   const rb::robot r = two_link_arm(2, 1.5, l1, 0.5, 0.375, 0.25, 0.0625);
@@ -174,22 +184,30 @@ TEST(dynamics_audit, every_library_with_kinematics_gives_the_arms_frames_and_jac
   x.qddot = Eigen::Vector2d(-0.5, 2.0);
   x.tau = Eigen::Vector2d(3.0, -1.0);
   const auto [poses, jacobians] = arm_kinematics(l1, Eigen::Vector2d(x.q));
+  const Eigen::MatrixXd accelerations = arm_bias_accelerations(l1, Eigen::Vector2d(x.q), Eigen::Vector2d(x.qdot));
+  const auto closed = [&](audit::dynamics_quantity q) -> const Eigen::MatrixXd& {
+    return q == audit::dynamics_quantity::frame_poses ? poses
+           : q == audit::dynamics_quantity::frame_jacobians ? jacobians
+                                                            : accelerations;
+  };
   // The reference within 2 eps of the scale max(1, l1 + c2) of the closed form (which rounds
-  // its sines and cosines once, and l1 times them once); every library that offers them
-  // within its budget, 16 n eps of the scale, of it.
-  for (const auto q : {audit::dynamics_quantity::frame_poses, audit::dynamics_quantity::frame_jacobians}) {
+  // its sines and cosines once, and l1 times them once; Jdot qdot's scale also carries w^2,
+  // w = 1.5 the forearm's rate); every library that offers them within its budget, 16 n eps
+  // of the scale, of it.
+  const auto kinematic = {audit::dynamics_quantity::frame_poses, audit::dynamics_quantity::frame_jacobians,
+                          audit::dynamics_quantity::frame_bias_accelerations};
+  for (const auto q : kinematic) {
     const audit::dynamics_residual ref = audit::reference_only(q, r, x);
-    EXPECT_EQ(ref.scale, l1 + 0.375);
-    EXPECT_LE((ref.reference - (q == audit::dynamics_quantity::frame_poses ? poses : jacobians)).cwiseAbs().maxCoeff(),
-              2 * 0x1p-52 * ref.scale);
+    EXPECT_EQ(ref.scale, (l1 + 0.375) * (q == audit::dynamics_quantity::frame_bias_accelerations ? 1.5 * 1.5 : 1.0));
+    EXPECT_LE((ref.reference - closed(q)).cwiseAbs().maxCoeff(), 2 * 0x1p-52 * ref.scale)
+        << audit::dynamics_quantity_name(q);
   }
   int offered = 0;
   for (const audit::dynamics_library& library : audit::dynamics_found())
     for (const auto& res : audit::check_dynamics(library, r, x).residuals) {
-      if (res.quantity != audit::dynamics_quantity::frame_poses && res.quantity != audit::dynamics_quantity::frame_jacobians)
-        continue;
+      if (std::find(kinematic.begin(), kinematic.end(), res.quantity) == kinematic.end()) continue;
       ++offered;
-      const Eigen::MatrixXd& want = res.quantity == audit::dynamics_quantity::frame_poses ? poses : jacobians;
+      const Eigen::MatrixXd& want = closed(res.quantity);
       EXPECT_TRUE(res.within()) << library.name << ": " << audit::dynamics_quantity_name(res.quantity) << ": "
                                 << res.residual << " eps, budget " << res.budget;
       EXPECT_LE((res.library - want).cwiseAbs().maxCoeff(), res.budget * 0x1p-52 * res.scale)
@@ -241,12 +259,17 @@ TEST(dynamics_audit, a_free_rigid_body_gives_newton_and_euler_in_every_library_w
       Eigen::MatrixXd pose(12, 1), jacobian = Eigen::MatrixXd::Zero(6, 6);
       pose << at.xyz, rotation.col(0), rotation.col(1), rotation.col(2);
       jacobian.topLeftCorner<3, 3>() = jacobian.bottomRightCorner<3, 3>() = rotation;
+      // Jdot qdot at udot = 0: the origin's d/dt (R v_b) = R (w_b x v_b), no angular one.
+      Eigen::MatrixXd bias_acceleration = Eigen::MatrixXd::Zero(6, 1);
+      bias_acceleration.topRows<3>() = rotation * Eigen::Vector3d(u.segment<3>(3)).cross(Eigen::Vector3d(u.head<3>()));
       const Eigen::MatrixXd closed = res.quantity == audit::dynamics_quantity::mass_matrix ? want.m
                                      : res.quantity == audit::dynamics_quantity::inverse ? Eigen::MatrixXd(want.q)
                                      : res.quantity == audit::dynamics_quantity::forward ? Eigen::MatrixXd(rate)
                                      : res.quantity == audit::dynamics_quantity::frame_poses ? pose
                                      : res.quantity == audit::dynamics_quantity::frame_jacobians ? jacobian
-                                                                                                 : res.reference;
+                                     : res.quantity == audit::dynamics_quantity::frame_bias_accelerations
+                                         ? bias_acceleration
+                                         : res.reference;
       EXPECT_LE((res.library - closed).cwiseAbs().maxCoeff(), res.budget * eps * res.scale) << library.name << ": " << what;
     }
   }
@@ -330,6 +353,28 @@ TEST(dynamics_audit, every_library_holds_to_the_lagrangian_on_random_robots) {
     EXPECT_GE(2 * run, offered) << library.name << " refused " << offered - run << " of " << offered << " robots";
     EXPECT_GE(offered, 10) << library.name;
   }
+}
+
+TEST(dynamics_audit, the_reference_jdot_qdot_is_the_derivative_of_the_twist_by_automatic_differentiation) {
+  // The reference's Jdot qdot (link_accelerations at qddot = 0, in mpfr50) against
+  // robots::point_bias_acceleration (forward-mode AD of each link's twist along qdot, in
+  // double) on random fixed robots: two computations that share only link_states, within
+  // the budget 16 n eps of the reference's scale.
+  EXPECT_EQ(seeded_check(40, [] {
+              const generators::robot_case c = *generators::robot_cases(6);
+              const audit::dynamics_state x = state_of(c);
+              const audit::dynamics_residual ref =
+                  audit::reference_only(audit::dynamics_quantity::frame_bias_accelerations, c.robot, x);
+              const rb::robot_model<double> m(c.robot);
+              const int n = m.dofs();
+              for (std::size_t l = 0; l < c.robot.links.size(); ++l) {
+                const Eigen::VectorXd ad =
+                    rb::point_bias_acceleration(m, Eigen::VectorXd(x.q), Eigen::VectorXd(x.qdot), static_cast<int>(l));
+                const double off = (ad - ref.reference.block<6, 1>(6 * static_cast<Eigen::Index>(l), 0)).cwiseAbs().maxCoeff();
+                RC_ASSERT(off <= 16 * n * 0x1p-52 * ref.scale);
+              }
+            }),
+            "");
 }
 
 /// A chain of revolute joints about skew axes, links of masses `masses` (each 0.4 below its
@@ -534,8 +579,7 @@ TEST(dynamics_audit, a_users_robot_with_fixed_joints_gets_one_coordinate_per_mov
   EXPECT_TRUE(c.agrees()) << c.note << c.disagreement;
   EXPECT_EQ(c.robots, 5);
   for (const auto& f : c.figures) {
-    const bool kinematic =
-        f.quantity == audit::dynamics_quantity::frame_poses || f.quantity == audit::dynamics_quantity::frame_jacobians;
+    const bool kinematic = audit::kinematic_quantity(f.quantity);
     EXPECT_EQ(f.checked, kinematic ? 0 : 5) << audit::dynamics_quantity_name(f.quantity);
     EXPECT_EQ(audit::dynamics_verdict(c, f), kinematic ? "not offered" : "within");  // the test library offers none
   }

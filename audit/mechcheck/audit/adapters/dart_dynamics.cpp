@@ -196,6 +196,22 @@ class dart_model final : public dynamics_model {
     }
     return out;
   }
+  /// Skeleton::getJacobianClassicDeriv of each BodyNode (the time derivative of its world
+  /// Jacobian, rows (omega; v)) times the Skeleton's velocities: Jdot qdot, stacked (a_o;
+  /// alpha). A FreeJoint's velocities are the root's body twist and its accelerations their
+  /// rates, as the state's: zero accelerations are the same in both.
+  std::optional<Eigen::VectorXd> frame_bias_accelerations(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) override {
+    set_positions(q);
+    skeleton_->setVelocities(in_dart(qdot));
+    const Eigen::VectorXd dq = skeleton_->getVelocities();
+    Eigen::VectorXd out(6 * static_cast<Eigen::Index>(body_.size()));
+    for (std::size_t l = 0; l < body_.size(); ++l) {
+      const Eigen::Matrix<double, 6, 1> a = skeleton_->getJacobianClassicDeriv(body_[l]) * dq;
+      out.segment<3>(6 * static_cast<Eigen::Index>(l)) = a.tail<3>();
+      out.segment<3>(6 * static_cast<Eigen::Index>(l) + 3) = a.head<3>();
+    }
+    return out;
+  }
 
  private:
   /// q in DART's positions; a floating base's pose (q's head: position, quaternion w x y z,
@@ -250,7 +266,8 @@ dynamics_library dynamics(double time_step) {
              "FreeJoint (positions: convertToPositions of the root's transform; velocities: the root's spatial "
              "velocity in its own frame, angular first, (w_b; v_b), and their rates; forces (n_b; f_b)); each "
              "link's frame by BodyNode::getWorldTransform, its Jacobian by Skeleton::getWorldJacobian (the "
-             "BodyNode's origin, rows (omega; v) in the world)";
+             "BodyNode's origin, rows (omega; v) in the world), Jdot qdot by Skeleton::getJacobianClassicDeriv "
+             "times the velocities";
   l.no_floating_base.clear();
   l.sets_damping = true;
   l.no_joint_terms = "DART 6.12 has no rotor inertia (its joints carry damping, spring and Coulomb friction only)";

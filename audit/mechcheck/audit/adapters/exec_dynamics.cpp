@@ -29,7 +29,8 @@ const char* reply_field(dynamics_quantity q) {
     case dynamics_quantity::inverse: return "tau";
     case dynamics_quantity::forward: return "qddot";
     case dynamics_quantity::frame_poses:
-    case dynamics_quantity::frame_jacobians: break;  // not carried (exec_wire.cpp)
+    case dynamics_quantity::frame_jacobians:
+    case dynamics_quantity::frame_bias_accelerations: break;  // not carried (exec_wire.cpp)
   }
   return "?";
 }

@@ -6,10 +6,12 @@
 
 #include <kdl/chain.hpp>
 #include <kdl/chaindynparam.hpp>
+#include <kdl/chainjnttojacdotsolver.hpp>
 #include <kdl/chainfdsolver_recursive_newton_euler.hpp>
 #include <kdl/chainidsolver_recursive_newton_euler.hpp>
 #include <kdl/frames.hpp>
 #include <kdl/jntarray.hpp>
+#include <kdl/jntarrayvel.hpp>
 #include <kdl/jntspaceinertiamatrix.hpp>
 #include <kdl/jacobian.hpp>
 #include <kdl/tree.hpp>
@@ -179,6 +181,38 @@ class kdl_model final : public dynamics_model {
     }
     return out;
   }
+  /// ChainJntToJacDotSolver::JntToJacDot in the hybrid representation ("ref Frame: base, ref
+  /// Point: end-effector") on the chain from the root to each link (Tree::getChain): Jdot
+  /// qdot, KDL's Twist (vel; rot); the root's zero. KDL has no tree solver of it.
+  std::optional<Eigen::VectorXd> frame_bias_accelerations(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) override {
+    Eigen::VectorXd out = Eigen::VectorXd::Zero(6 * static_cast<Eigen::Index>(robot_.links.size()));
+    const std::string& root = tree_.getRootSegment()->first;
+    for (std::size_t l = 0; l < robot_.links.size(); ++l) {
+      if (static_cast<int>(l) == root_) continue;
+      KDL::Chain chain;
+      if (!tree_.getChain(root, robot_.links[l].name, chain))
+        throw error("kdl: Tree::getChain refused the chain to " + robot_.links[l].name);
+      KDL::JntArrayVel rates(chain.getNrOfJoints());
+      unsigned k = 0;
+      for (unsigned sg = 0; sg < chain.getNrOfSegments(); ++sg) {
+        const KDL::Joint& j = chain.getSegment(sg).getJoint();
+        if (j.getType() == KDL::Joint::None) continue;
+        const int c = coordinate_.at(j.getName());
+        rates.q(k) = q(c);
+        rates.qdot(k) = qdot(c);
+        ++k;
+      }
+      KDL::ChainJntToJacDotSolver solver(chain);
+      solver.setHybridRepresentation();
+      KDL::Twist a;
+      check(solver.JntToJacDot(rates, a), "ChainJntToJacDotSolver::JntToJacDot");
+      for (int i = 0; i < 3; ++i) {
+        out(6 * static_cast<Eigen::Index>(l) + i) = a.vel(i);
+        out(6 * static_cast<Eigen::Index>(l) + 3 + i) = a.rot(i);
+      }
+    }
+    return out;
+  }
 
  private:
   static KDL::JntArray joints(const Eigen::VectorXd& x) {
@@ -210,7 +244,9 @@ dynamics_library kdl_dynamics() {
              "to H's diagonal, the RNE solvers inertia q_dotdot); no damping: KDL 1.5.1 keeps a Joint's damping "
              "and none of its solvers reads it (getDamping is called nowhere in its source), so a robot with "
              "damping is refused; each link's frame by TreeFkSolverPos_recursive::JntToCart and its Jacobian by "
-             "TreeJntToJacSolver::JntToJac (the segment's tip, in the base frame), on a chain and a tree alike";
+             "TreeJntToJacSolver::JntToJac (the segment's tip, in the base frame), on a chain and a tree alike; "
+             "Jdot qdot by ChainJntToJacDotSolver::JntToJacDot (hybrid representation) on the chain from the root "
+             "to each link (Tree::getChain)";
   l.sets_armature = true;
   l.no_joint_terms = "KDL 1.5.1 keeps a Joint's damping and none of its solvers reads it";
   l.no_floating_base = "KDL has no floating base: a KDL::Chain's and a KDL::Tree's root is the world's frame, and "

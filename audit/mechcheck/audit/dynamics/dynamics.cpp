@@ -27,6 +27,7 @@ const char* dynamics_quantity_name(dynamics_quantity q) {
     case dynamics_quantity::forward: return "forward dynamics";
     case dynamics_quantity::frame_poses: return "frame poses";
     case dynamics_quantity::frame_jacobians: return "frame Jacobians";
+    case dynamics_quantity::frame_bias_accelerations: return "frame Jdot qdot";
   }
   return "?";
 }
@@ -205,11 +206,12 @@ robots::base_pose<mpfr50> floating_base_pose(const Eigen::VectorXd& q) {
 /// near a pitch of +-pi/2: 179 eps on a random robot).
 struct kinematic_terms {
   Eigen::MatrixXd poses, jacobians;
-  double scale = 0;
+  Eigen::VectorXd bias_accelerations;  ///< with_bias only
+  double scale = 0, scale_bias = 0;
   int moving_links = 0;
 };
 
-kinematic_terms kinematics_of(const robots::robot& robot, const dynamics_state& x) {
+kinematic_terms kinematics_of(const robots::robot& robot, const dynamics_state& x, bool with_bias = false) {
   const robots::robot_model<mpfr50> m(robot);
   const int n = m.dofs(), base = robot.floating ? 6 : 0, nq = n + (robot.floating ? 7 : 0);
   if (x.q.size() != nq)
@@ -249,6 +251,32 @@ kinematic_terms kinematics_of(const robots::robot& robot, const dynamics_state& 
   }
   out.scale = std::max(1.0, robots::term_scales(m, joints, robot.floating ? x.q.head<3>().norm() : 0.0).lever);
   out.moving_links = n + (robot.floating ? 1 : 0);
+  if (!with_bias) return out;
+  // Jdot qdot: each link's classical acceleration at zero accelerations, the root's on a
+  // floating base R (0 + w_b x v_b) and no angular one.
+  if (x.qdot.size() != n + base)
+    throw dimension_error("check_dynamics: robot " + robot.name + " has " + std::to_string(n + base) +
+                          " velocities, qdot has " + std::to_string(x.qdot.size()));
+  const dynamic_vector<mpfr50> u = widened<mpfr50>(x.qdot);
+  const std::vector<robots::link_state<mpfr50>> s = states(u);
+  const dynamic_vector<mpfr50> joint_rates = u.tail(n), still = dynamic_vector<mpfr50>::Zero(n);
+  robots::detail::link_acceleration<mpfr50> root{vector3<mpfr50>::Zero(), vector3<mpfr50>::Zero()};
+  if (b) {
+    const vector3<mpfr50> v_b = u.head<3>(), w_b = u.segment<3>(3);
+    root.accel = b->rotation * vector3<mpfr50>(w_b.cross(v_b));
+  }
+  const std::vector<robots::detail::link_acceleration<mpfr50>> a = robots::detail::link_accelerations(m, s, q, joint_rates, still, root);
+  out.bias_accelerations.resize(6 * links);
+  for (Eigen::Index l = 0; l < links; ++l)
+    for (int i = 0; i < 3; ++i) {
+      out.bias_accelerations(6 * l + i) = static_cast<double>(a[std::size_t(l)].accel(i));
+      out.bias_accelerations(6 * l + 3 + i) = static_cast<double>(a[std::size_t(l)].alpha(i));
+    }
+  // The terms are omega x (omega x d), 2 omega x a qdot, alpha x d, w_b x v_b: each within
+  // lever w^2, w the largest of 1, a link's |omega| and a rate (n of them accumulate: the budget).
+  double w = std::max(1.0, x.qdot.size() ? x.qdot.cwiseAbs().maxCoeff() : 0.0);
+  for (const robots::link_state<mpfr50>& l : s) w = std::max(w, static_cast<double>(l.omega.norm()));
+  out.scale_bias = out.scale * w * w;
   return out;
 }
 }  // namespace
@@ -301,13 +329,17 @@ dynamics_check check_dynamics(const dynamics_library& library, const robots::rob
   if (const auto a = model->forward(x.q, x.qdot, x.tau))
     out.residuals.push_back(residual_of(dynamics_quantity::forward, *a, e.qddot, e.scale_forward, e.moving_links, who));
   const std::optional<Eigen::MatrixXd> poses = model->frame_poses(x.q), jacobians = model->frame_jacobians(x.q);
-  if (poses || jacobians) {
-    const kinematic_terms k = kinematics_of(robot, x);
+  const std::optional<Eigen::VectorXd> accelerations = model->frame_bias_accelerations(x.q, x.qdot);
+  if (poses || jacobians || accelerations) {
+    const kinematic_terms k = kinematics_of(robot, x, accelerations.has_value());
     if (poses)
       out.residuals.push_back(residual_of(dynamics_quantity::frame_poses, *poses, k.poses, k.scale, k.moving_links, who));
     if (jacobians)
       out.residuals.push_back(
           residual_of(dynamics_quantity::frame_jacobians, *jacobians, k.jacobians, k.scale, k.moving_links, who));
+    if (accelerations)
+      out.residuals.push_back(residual_of(dynamics_quantity::frame_bias_accelerations, *accelerations,
+                                          k.bias_accelerations, k.scale_bias, k.moving_links, who));
   }
   return out;
 }
@@ -382,6 +414,11 @@ dynamics_residual reference_only(dynamics_quantity quantity, const robots::robot
     case dynamics_quantity::bias: return residual_of(quantity, e.bias, e.bias, e.scale_h, e.moving_links, "reference");
     case dynamics_quantity::inverse: return residual_of(quantity, e.tau, e.tau, e.scale_tau, e.moving_links, "reference");
     case dynamics_quantity::forward: return residual_of(quantity, e.qddot, e.qddot, e.scale_forward, e.moving_links, "reference");
+    case dynamics_quantity::frame_bias_accelerations: {
+      const kinematic_terms k = kinematics_of(robot, x, true);
+      return residual_of(quantity, k.bias_accelerations, k.bias_accelerations, k.scale_bias, k.moving_links,
+                         "reference");
+    }
     case dynamics_quantity::frame_poses:
     case dynamics_quantity::frame_jacobians: {
       const kinematic_terms k = kinematics_of(robot, x);

@@ -73,18 +73,31 @@ class library_failure : public error {
 ///   frame_jacobians  6 L x v: rows 6 l .. 6 l + 5 link l's geometric Jacobian (v_o; omega),
 ///                    the velocity of its frame's origin and its angular velocity in the world,
 ///                    against the state's velocities (qdot; u on a floating base, whose
-///                    columns a library's base convention maps as its forces: J = J_lib T).
+///                    columns a library's base convention maps as its forces: J = J_lib T);
+///   frame_bias_accelerations  6 L x 1: rows 6 l .. 6 l + 5 link l's Jdot qdot (a_o; alpha),
+///                    the classical acceleration of its frame's origin and its angular
+///                    acceleration in the world at zero accelerations (qddot = 0; udot = 0 on a
+///                    floating base, the body twist's rate, whose linear part a library that
+///                    takes the base's velocity in the world sees as R (w_b x v_b)).
 /// Their reference is the forward kinematics of robots/dynamics.hpp (link_states) in mpfr50,
-/// a Jacobian's column k the links' twists at velocity e_k, exactly; scale max(1, the
+/// a Jacobian's column k the links' twists at velocity e_k, exactly, and Jdot qdot the links'
+/// accelerations of robots/recursive.hpp (link_accelerations) at qddot = 0; scale max(1, the
 /// longest path from the world's origin to a link's frame or centre of mass), which bounds
 /// every position and every column of a revolute joint (a rotation's entries and a slide's
-/// columns are within 1).
-enum class dynamics_quantity { mass_matrix, bias, inverse, forward, frame_poses, frame_jacobians };
+/// columns are within 1), times w^2 for Jdot qdot, w the largest of 1, a link's |omega| and
+/// a rate (its terms are omega x (omega x d), 2 omega x a qdot, alpha x d, w_b x v_b).
+enum class dynamics_quantity { mass_matrix, bias, inverse, forward, frame_poses, frame_jacobians, frame_bias_accelerations };
 const char* dynamics_quantity_name(dynamics_quantity q);
+/// Whether q is one of the kinematics (frame_poses, frame_jacobians, frame_bias_accelerations).
+inline bool kinematic_quantity(dynamics_quantity q) {
+  return q == dynamics_quantity::frame_poses || q == dynamics_quantity::frame_jacobians ||
+         q == dynamics_quantity::frame_bias_accelerations;
+}
 /// Every quantity, in the reports' order.
 inline constexpr dynamics_quantity all_dynamics_quantities[] = {
-    dynamics_quantity::mass_matrix, dynamics_quantity::bias,        dynamics_quantity::inverse,
-    dynamics_quantity::forward,     dynamics_quantity::frame_poses, dynamics_quantity::frame_jacobians};
+    dynamics_quantity::mass_matrix,     dynamics_quantity::bias,        dynamics_quantity::inverse,
+    dynamics_quantity::forward,         dynamics_quantity::frame_poses, dynamics_quantity::frame_jacobians,
+    dynamics_quantity::frame_bias_accelerations};
 
 /// One library's model of one robot: each quantity it offers (nothing where it offers none).
 /// Coordinates in the description's order of its moving joints (robots::tree).
@@ -108,6 +121,10 @@ class dynamics_model {
   /// order of the robot the model was built from); none by default.
   virtual std::optional<Eigen::MatrixXd> frame_poses(const Eigen::VectorXd& /*q*/) { return std::nullopt; }
   virtual std::optional<Eigen::MatrixXd> frame_jacobians(const Eigen::VectorXd& /*q*/) { return std::nullopt; }
+  virtual std::optional<Eigen::VectorXd> frame_bias_accelerations(const Eigen::VectorXd& /*q*/,
+                                                                  const Eigen::VectorXd& /*qdot*/) {
+    return std::nullopt;
+  }
 };
 
 /// A dynamics library: how it builds its model of a robot (throws robot_refused).

@@ -150,6 +150,7 @@ const char* quantity_op(dynamics_quantity q) {
     case dynamics_quantity::forward: return "forward";
     case dynamics_quantity::frame_poses: return "frame_poses";
     case dynamics_quantity::frame_jacobians: return "frame_jacobians";
+    case dynamics_quantity::frame_bias_accelerations: return "frame_bias_accelerations";
   }
   return "?";
 }
