@@ -130,8 +130,9 @@ TEST(dynamics_audit, every_library_gives_the_two_link_arms_closed_form) {
     ASSERT_TRUE(c.refused.empty()) << library.name << ": " << c.refused;
     // Every library offers forward dynamics; Bullet's core nothing else.
     ASSERT_FALSE(c.residuals.empty()) << library.name;
-    // Kinematics: frames and Jacobians in KDL, MuJoCo and DART, Jdot qdot in KDL and DART.
-    const std::size_t kinematics = library.name == "kdl" || library.name == "dart" ? 3 : library.name == "mujoco" ? 2 : 0;
+    // Kinematics: frames and Jacobians in KDL, MuJoCo, DART and Simbody, Jdot qdot in all but MuJoCo.
+    const std::size_t kinematics =
+        library.name == "kdl" || library.name == "dart" || library.name == "simbody" ? 3 : library.name == "mujoco" ? 2 : 0;
     EXPECT_EQ(c.residuals.size(), library.name == "bullet" ? 1u : 4u + kinematics) << library.name;
     EXPECT_EQ(c.residuals[c.residuals.size() - kinematics - 1].quantity, audit::dynamics_quantity::forward)
         << library.name;

@@ -31,6 +31,7 @@ simbody_bridge::robot_setup setup_of(const robots::robot& r, const robots::tree&
   const auto add = [&](int link, int parent, const robots::joint* j) {
     simbody_bridge::robot_setup::body b;
     b.parent = parent;
+    b.link = link;
     if (j) {
       b.joint = j->type == robots::joint_type::prismatic ? 1 : j->type == robots::joint_type::fixed ? 2 : 0;
       copy(robots::rpy_rotation<double>(j->origin.rpy), b.rotation);
@@ -67,6 +68,8 @@ class model final : public dynamics_model {
   explicit model(const robots::robot& r) : floating_(r.floating) {
     const robots::tree t = robots::validate(r);
     const bridge::robot_setup s = setup_of(r, t, coordinates_);
+    for (const auto& b : s.bodies) link_of_.push_back(b.link);
+    links_ = static_cast<Eigen::Index>(r.links.size());
     n_ = t.dofs;
     try {
       d_ = std::make_unique<bridge::robot_dynamics>(s);
@@ -107,6 +110,39 @@ class model final : public dynamics_model {
     Eigen::VectorXd a(n_ + base());
     guarded("calcAccelerationIgnoringConstraints", [&] { d_->forward(qs.data(), us.data(), force.data(), a.data()); });
     return f.acceleration_from_library(out(a));
+  }
+  /// Each body's getBodyTransform.
+  std::optional<Eigen::MatrixXd> frame_poses(const Eigen::VectorXd& q) override {
+    const Eigen::VectorXd qs = positions(q);
+    std::vector<double> x(12 * link_of_.size());
+    guarded("getBodyTransform", [&] { d_->frames(qs.data(), x.data()); });
+    Eigen::MatrixXd poses(12, links_);
+    for (std::size_t b = 0; b < link_of_.size(); ++b)
+      poses.col(link_of_[b]) = Eigen::Map<const Eigen::VectorXd>(x.data() + 12 * b, 12);
+    return poses;
+  }
+  /// calcFrameJacobian at each body's origin: rows (angular; linear) in the ground stacked
+  /// (v; omega); a floating base's columns read through the Free mobilizer's u as its forces
+  /// are (a row is a covector: T^T row).
+  std::optional<Eigen::MatrixXd> frame_jacobians(const Eigen::VectorXd& q) override {
+    const Eigen::MatrixXd j = library_jacobians(q);
+    const base_map f = frame(q, Eigen::VectorXd::Zero(j.cols()));
+    Eigen::MatrixXd jac(j.rows(), j.cols());
+    for (Eigen::Index r = 0; r < j.rows(); ++r) jac.row(r) = f.from_library(Eigen::VectorXd(j.row(r).transpose())).transpose();
+    return jac;
+  }
+  /// calcBiasForFrameJacobian at each body's origin: JFDot u at Simbody's udot = 0; the state's
+  /// udot = 0 is Simbody's T (0 + turn) on a floating base (the Free mobilizer's linear
+  /// velocity is in the ground: its rate carries R (w_b x v_b)), added through JF.
+  std::optional<Eigen::VectorXd> frame_bias_accelerations(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) override {
+    const base_map f = frame(q, qdot);
+    const Eigen::VectorXd qs = positions(q), us = in(f.to_library(qdot));
+    Eigen::VectorXd bias(6 * static_cast<Eigen::Index>(link_of_.size()));
+    guarded("calcBiasForFrameJacobian", [&] { d_->frame_biases(qs.data(), us.data(), bias.data()); });
+    Eigen::VectorXd a = ordered(bias);
+    if (floating_)
+      a += library_jacobians(q) * f.acceleration_to_library(Eigen::VectorXd::Zero(qdot.size()));
+    return a;
   }
 
  private:
@@ -155,7 +191,32 @@ class model final : public dynamics_model {
     return all.from_library(m);
   }
 
+  /// Rows 6 body's (angular; linear) as the robot's links' (v; omega).
+  Eigen::MatrixXd ordered(const Eigen::MatrixXd& rows) const {
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(6 * links_, rows.cols());
+    for (std::size_t b = 0; b < link_of_.size(); ++b) {
+      const Eigen::Index from = 6 * static_cast<Eigen::Index>(b), to = 6 * link_of_[b];
+      out.middleRows(to, 3) = rows.middleRows(from + 3, 3);
+      out.middleRows(to + 3, 3) = rows.middleRows(from, 3);
+    }
+    return out;
+  }
+  /// calcFrameJacobian's rows as ordered's, its columns the robot's mobilities (a floating
+  /// base's six first, in Simbody's layout).
+  Eigen::MatrixXd library_jacobians(const Eigen::VectorXd& q) const {
+    const Eigen::VectorXd qs = positions(q);
+    const int nu = n_ + base();
+    const auto rows = 6 * static_cast<Eigen::Index>(link_of_.size());
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> j(rows, nu);
+    guarded("calcFrameJacobian", [&] { d_->frame_jacobians(qs.data(), j.data()); });
+    Eigen::MatrixXd cols(rows, nu);
+    for (Eigen::Index r = 0; r < rows; ++r) cols.row(r) = out(Eigen::VectorXd(j.row(r).transpose())).transpose();
+    return ordered(cols);
+  }
+
   std::unique_ptr<bridge::robot_dynamics> d_;
+  std::vector<int> link_of_;      ///< the robot's link of each of the bridge's bodies
+  Eigen::Index links_ = 0;
   coordinate_order coordinates_;  ///< the bridge's moving joints
   int n_ = 0;
   bool floating_ = false;
@@ -178,7 +239,10 @@ dynamics_library dynamics() {
              "qdot for both mobilizers; a floating root on a MobilizedBody::Free from the ground (its q set by "
              "setQToFitTransform of the base's pose; its u the angular then the linear velocity, both in the "
              "ground's frame, R w_b and R v_b, their rates R wdot_b and R (vdot_b + w_b x v_b); forces and M "
-             "through the same map)";
+             "through the same map); each link's frame by MobilizedBody::getBodyTransform, its Jacobian by "
+             "calcFrameJacobian at the body's origin (rows (angular; linear) in the ground; a floating base's "
+             "columns through the same map), Jdot qdot by calcBiasForFrameJacobian (at Simbody's udot = 0, plus "
+             "JF times the state's udot = 0 in Simbody's u on a floating base)";
   l.no_floating_base.clear();
   l.sets_damping = true;
   l.no_joint_terms = "Simbody has no rotor inertia (its mobilizers carry none; a damper is a force element)";

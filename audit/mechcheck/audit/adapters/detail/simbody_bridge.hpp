@@ -34,6 +34,7 @@ struct robot_setup {
     double com[3] = {0, 0, 0};                         ///< centre of mass in the body's frame
     double inertia[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};   ///< about the centre of mass, row-major
     double damping = 0;  ///< a Pin's or Slider's viscous damping (Force::MobilityLinearDamper)
+    int link = -1;       ///< the robot's link it is (its caller's numbering)
   };
   double gravity[3] = {0, 0, 0};
   std::vector<body> bodies;
@@ -132,8 +133,9 @@ class model {
 /// Inside the bridge (its sources include Simbody): the robot's bodies on their mobilizers
 /// (a Pin or Slider whose frames turn z or x onto the joint's axis, a Weld for a fixed
 /// joint, in robot_setup's order); returns the moving bodies in order. Gravity is the
-/// caller's.
-std::vector<SimTK::MobilizedBody> build_robot(const robot_setup& r, SimTK::SimbodyMatterSubsystem& matter);
+/// caller's. `all`, where given, gets every body, robot_setup's order.
+std::vector<SimTK::MobilizedBody> build_robot(const robot_setup& r, SimTK::SimbodyMatterSubsystem& matter,
+                                              std::vector<SimTK::MobilizedBody>* all = nullptr);
 
 /// Simbody's equations of motion of a robot_setup: q, u, udot, tau and the rows and columns
 /// of M in the order of the moving bodies in `bodies` (u = qdot for a Pin and a Slider). A
@@ -148,6 +150,15 @@ class robot_dynamics {
   void bias(const double* q, const double* u, double* h) const;
   void inverse(const double* q, const double* u, const double* udot, double* tau) const;
   void forward(const double* q, const double* u, const double* tau, double* udot) const;
+  /// Every body's frame in the ground at q (MobilizedBody::getBodyTransform, X_GB): 12
+  /// numbers a body, robot_setup's order: the position, then the rotation's columns.
+  void frames(const double* q, double* out) const;
+  /// Every body's frame Jacobian at its origin (calcFrameJacobian): 6 rows a body, (angular;
+  /// linear) in the ground, row-major, its columns the mobilities in this class's order.
+  void frame_jacobians(const double* q, double* out) const;
+  /// Every body's JFDot u at its origin (calcBiasForFrameJacobian): 6 numbers a body,
+  /// (angular; linear) in the ground.
+  void frame_biases(const double* q, const double* u, double* out) const;
 
  private:
   struct impl;

@@ -25,7 +25,8 @@ MassProperties mass_properties(const robot_setup::body& b) {
 }
 }  // namespace
 
-std::vector<MobilizedBody> build_robot(const robot_setup& r, SimbodyMatterSubsystem& matter) {
+std::vector<MobilizedBody> build_robot(const robot_setup& r, SimbodyMatterSubsystem& matter,
+                                       std::vector<MobilizedBody>* all) {
   std::vector<MobilizedBody> mobods, moving;
   for (const auto& b : r.bodies) {
     MobilizedBody& parent = b.parent < 0 ? matter.updGround() : mobods[std::size_t(b.parent)];
@@ -48,6 +49,7 @@ std::vector<MobilizedBody> build_robot(const robot_setup& r, SimbodyMatterSubsys
       mobods.push_back(MobilizedBody::Weld(parent, origin, info, Transform()));
     }
   }
+  if (all) *all = mobods;
   return moving;
 }
 
@@ -55,6 +57,7 @@ struct robot_dynamics::impl {
   MultibodySystem system;
   SimbodyMatterSubsystem matter{system};
   GeneralForceSubsystem forces{system};
+  std::vector<MobilizedBody> all;     ///< every body, robot_setup's order
   std::vector<MobilizedBody> moving;  ///< in order
   Force::Gravity gravity;
   std::vector<UIndex> u;              ///< per mobility, in the moving bodies' order
@@ -62,7 +65,7 @@ struct robot_dynamics::impl {
   mutable State state;
 
   explicit impl(const robot_setup& r)
-      : moving(build_robot(r, matter)), gravity(forces, matter, vec3(r.gravity)),
+      : moving(build_robot(r, matter, &all)), gravity(forces, matter, vec3(r.gravity)),
         free(!r.bodies.empty() && r.bodies.front().joint == 3) {
     std::size_t k = 0;
     for (const auto& b : r.bodies)
@@ -146,6 +149,42 @@ void robot_dynamics::forward(const double* q, const double* u, const double* tau
   p_->matter.calcAccelerationIgnoringConstraints(p_->state, p_->mobility(tau) + p_->mobility_forces(),
                                                  p_->body_forces(), accelerations, a_gb);
   p_->out(accelerations, udot);
+}
+
+void robot_dynamics::frames(const double* q, double* out) const {
+  p_->set(q, nullptr, Stage::Position);
+  for (std::size_t b = 0; b < p_->all.size(); ++b) {
+    const Transform& x = p_->all[b].getBodyTransform(p_->state);
+    for (int i = 0; i < 3; ++i) out[12 * b + std::size_t(i)] = x.p()[i];
+    for (int c = 0; c < 3; ++c)
+      for (int i = 0; i < 3; ++i) out[12 * b + 3 + 3 * std::size_t(c) + std::size_t(i)] = x.R().asMat33()(i, c);
+  }
+}
+
+namespace {
+Array_<MobilizedBodyIndex> indices(const std::vector<MobilizedBody>& bodies) {
+  Array_<MobilizedBodyIndex> out;
+  for (const MobilizedBody& b : bodies) out.push_back(b.getMobilizedBodyIndex());
+  return out;
+}
+}  // namespace
+
+void robot_dynamics::frame_jacobians(const double* q, double* out) const {
+  p_->set(q, nullptr, Stage::Position);
+  const Array_<Vec3> origins(p_->all.size(), Vec3(0));
+  Matrix jf;
+  p_->matter.calcFrameJacobian(p_->state, indices(p_->all), origins, jf);
+  const std::size_t nu = p_->u.size();
+  for (std::size_t r = 0; r < 6 * p_->all.size(); ++r)
+    for (std::size_t k = 0; k < nu; ++k) out[r * nu + k] = jf(int(r), p_->u[k]);
+}
+
+void robot_dynamics::frame_biases(const double* q, const double* u, double* out) const {
+  p_->set(q, u, Stage::Velocity);
+  const Array_<Vec3> origins(p_->all.size(), Vec3(0));
+  Vector bias;
+  p_->matter.calcBiasForFrameJacobian(p_->state, indices(p_->all), origins, bias);
+  for (std::size_t r = 0; r < 6 * p_->all.size(); ++r) out[r] = bias[int(r)];
 }
 
 }  // namespace mechcheck::audit::simbody_bridge
