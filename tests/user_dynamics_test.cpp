@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -126,6 +127,78 @@ TEST(user_dynamics, a_templated_library_is_judged_in_every_tier) {
            states(10), &r)) {
     EXPECT_FALSE(c.agrees()) << c.library;
     EXPECT_NE(c.disagreement.find("bias forces"), std::string::npos) << c.disagreement;
+  }
+}
+
+/// The arm's kinematics in closed form beside its dynamics: the frames of base, upper arm and
+/// forearm (Rz(q1) at the origin, Rz(q1 + q2) at the elbow (l1 cos q1, l1 sin q1, 0)), their
+/// Jacobians (the elbow moves with the shoulder at e_z x elbow) and Jdot qdot (the elbow's
+/// centripetal -qdot1^2 elbow); in double inside where asked.
+template <class T, bool in_double>
+struct kinematic_arm : arm<T, variant::right> {
+  using arm<T, variant::right>::arm;
+  using S = std::conditional_t<in_double, double, T>;
+  static S angle(const dynamic_vector<T>& q, int k) { return S(q(k)); }
+  dynamic_matrix<T> frame_poses(const dynamic_vector<T>& q) const {
+    using std::cos;
+    using std::sin;
+    dynamic_matrix<T> out = dynamic_matrix<T>::Zero(12, 3);
+    const S a1 = angle(q, 0), a12 = S(angle(q, 0) + angle(q, 1));
+    const S angles[3] = {S(0), a1, a12};
+    for (int l = 0; l < 3; ++l) {
+      out(3, l) = T(cos(angles[l])), out(4, l) = T(sin(angles[l]));    // x column
+      out(6, l) = T(-sin(angles[l])), out(7, l) = T(cos(angles[l]));   // y column
+      out(11, l) = T(1);                                               // z column
+    }
+    out(0, 2) = T(S(this->l1) * cos(a1));
+    out(1, 2) = T(S(this->l1) * sin(a1));
+    return out;
+  }
+  dynamic_matrix<T> frame_jacobians(const dynamic_vector<T>& q) const {
+    using std::cos;
+    using std::sin;
+    dynamic_matrix<T> out = dynamic_matrix<T>::Zero(18, 2);
+    const S a1 = angle(q, 0);
+    out(11, 0) = T(1);
+    out(12, 0) = T(-S(this->l1) * sin(a1)), out(13, 0) = T(S(this->l1) * cos(a1)), out(17, 0) = T(1);
+    out(17, 1) = T(1);
+    return out;
+  }
+  dynamic_vector<T> frame_bias_accelerations(const dynamic_vector<T>& q, const dynamic_vector<T>& qdot) const {
+    using std::cos;
+    using std::sin;
+    dynamic_vector<T> out = dynamic_vector<T>::Zero(18);
+    const S a1 = angle(q, 0), w = S(qdot(0));
+    out(12) = T(-S(this->l1) * cos(a1) * w * w);
+    out(13) = T(-S(this->l1) * sin(a1) * w * w);
+    return out;
+  }
+};
+template <class T>
+using arm_with_kinematics = kinematic_arm<T, false>;
+template <class T>
+using arm_with_kinematics_in_double = kinematic_arm<T, true>;
+
+TEST(user_dynamics, a_templated_librarys_kinematics_are_judged_in_every_tier) {
+  // Frames, Jacobians and Jdot qdot found by their signatures and held to forward kinematics
+  // in each tier; computed in double inside, caught in float128 and mpfr50.
+  const rb::robot r = planar_arm();
+  const auto kinematic = {audit::dynamics_quantity::frame_poses, audit::dynamics_quantity::frame_jacobians,
+                          audit::dynamics_quantity::frame_bias_accelerations};
+  for (const auto& c : audit::templated_dynamics<arm_with_kinematics>{"arm", "closed form"}.run_every_tier(states(10), &r)) {
+    EXPECT_TRUE(all_within(c)) << c.library << ": " << c.disagreement << c.note;
+    for (const auto& f : c.figures)
+      if (std::find(kinematic.begin(), kinematic.end(), f.quantity) != kinematic.end())
+        EXPECT_EQ(f.checked, 10) << c.library << ": " << audit::dynamics_quantity_name(f.quantity);
+  }
+  const auto in_double = audit::templated_dynamics<arm_with_kinematics_in_double>{"arm_in_double", "double inside"}
+                             .run_every_tier(states(10), &r);
+  ASSERT_EQ(in_double.size(), 3u);
+  EXPECT_TRUE(all_within(in_double[0])) << in_double[0].disagreement;
+  for (int tier = 1; tier < 3; ++tier) {
+    EXPECT_FALSE(in_double[std::size_t(tier)].agrees());
+    EXPECT_NE(in_double[std::size_t(tier)].disagreement.find("frame"), std::string::npos)
+        << in_double[std::size_t(tier)].disagreement;
   }
 }
 

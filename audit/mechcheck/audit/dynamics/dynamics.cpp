@@ -199,19 +199,9 @@ robots::base_pose<mpfr50> floating_base_pose(const Eigen::VectorXd& q) {
   return {r.normalized().toRotationMatrix(), vector3<mpfr50>(mpfr50(q(0)), mpfr50(q(1)), mpfr50(q(2)))};
 }
 
-/// The kinematics of `robot` at x (dynamics_quantity's frame_poses and frame_jacobians) in
-/// mpfr50, rounded once, its links in its order. Always the robot given, where a library holds
-/// another (MuJoCo's compiler changes the inertias, not the bodies' frames, which it holds as
-/// written; the held robot's frames come back through roll, pitch and yaw, which lose digits
-/// near a pitch of +-pi/2: 179 eps on a random robot).
-struct kinematic_terms {
-  Eigen::MatrixXd poses, jacobians;
-  Eigen::VectorXd bias_accelerations;  ///< with_bias only
-  double scale = 0, scale_bias = 0;
-  int moving_links = 0;
-};
+}  // namespace
 
-kinematic_terms kinematics_of(const robots::robot& robot, const dynamics_state& x, bool with_bias = false) {
+kinematic_reference kinematic_reference_at(const robots::robot& robot, const dynamics_state& x, bool with_bias) {
   const robots::robot_model<mpfr50> m(robot);
   const int n = m.dofs(), base = robot.floating ? 6 : 0, nq = n + (robot.floating ? 7 : 0);
   if (x.q.size() != nq)
@@ -226,14 +216,13 @@ kinematic_terms kinematics_of(const robots::robot& robot, const dynamics_state& 
     return robots::link_states(m, q, dynamic_vector<mpfr50>(u.tail(n)), robots::detail::floating_root(*b, u));
   };
   const auto links = static_cast<Eigen::Index>(robot.links.size());
-  kinematic_terms out;
+  kinematic_reference out;
   out.poses.resize(12, links);
   const std::vector<robots::link_state<mpfr50>> rest = states(dynamic_vector<mpfr50>::Zero(n + base));
   for (Eigen::Index l = 0; l < links; ++l) {
     const robots::link_state<mpfr50>& s = rest[std::size_t(l)];
-    for (int i = 0; i < 3; ++i) out.poses(i, l) = static_cast<double>(s.origin(i));
-    for (int c = 0; c < 3; ++c)
-      for (int i = 0; i < 3; ++i) out.poses(3 + 3 * c + i, l) = static_cast<double>(s.rotation(i, c));
+    out.poses.block<3, 1>(0, l) = s.origin;
+    for (int c = 0; c < 3; ++c) out.poses.block<3, 1>(3 + 3 * c, l) = s.rotation.col(c);
   }
   // Column k: every link's twist at the velocity e_k (the twist is linear in the velocities).
   out.jacobians.resize(6 * links, n + base);
@@ -242,11 +231,8 @@ kinematic_terms kinematics_of(const robots::robot& robot, const dynamics_state& 
     e(k) = 1;
     const std::vector<robots::link_state<mpfr50>> moving = states(e);
     for (Eigen::Index l = 0; l < links; ++l) {
-      const robots::link_state<mpfr50>& s = moving[std::size_t(l)];
-      for (int i = 0; i < 3; ++i) {
-        out.jacobians(6 * l + i, k) = static_cast<double>(s.velocity(i));
-        out.jacobians(6 * l + 3 + i, k) = static_cast<double>(s.omega(i));
-      }
+      out.jacobians.block<3, 1>(6 * l, k) = moving[std::size_t(l)].velocity;
+      out.jacobians.block<3, 1>(6 * l + 3, k) = moving[std::size_t(l)].omega;
     }
   }
   out.scale = std::max(1.0, robots::term_scales(m, joints, robot.floating ? x.q.head<3>().norm() : 0.0).lever);
@@ -265,18 +251,39 @@ kinematic_terms kinematics_of(const robots::robot& robot, const dynamics_state& 
     const vector3<mpfr50> v_b = u.head<3>(), w_b = u.segment<3>(3);
     root.accel = b->rotation * vector3<mpfr50>(w_b.cross(v_b));
   }
-  const std::vector<robots::detail::link_acceleration<mpfr50>> a = robots::detail::link_accelerations(m, s, q, joint_rates, still, root);
+  const std::vector<robots::detail::link_acceleration<mpfr50>> a =
+      robots::detail::link_accelerations(m, s, q, joint_rates, still, root);
   out.bias_accelerations.resize(6 * links);
-  for (Eigen::Index l = 0; l < links; ++l)
-    for (int i = 0; i < 3; ++i) {
-      out.bias_accelerations(6 * l + i) = static_cast<double>(a[std::size_t(l)].accel(i));
-      out.bias_accelerations(6 * l + 3 + i) = static_cast<double>(a[std::size_t(l)].alpha(i));
-    }
+  for (Eigen::Index l = 0; l < links; ++l) {
+    out.bias_accelerations.segment<3>(6 * l) = a[std::size_t(l)].accel;
+    out.bias_accelerations.segment<3>(6 * l + 3) = a[std::size_t(l)].alpha;
+  }
   // The terms are omega x (omega x d), 2 omega x a qdot, alpha x d, w_b x v_b: each within
   // lever w^2, w the largest of 1, a link's |omega| and a rate (n of them accumulate: the budget).
   double w = std::max(1.0, x.qdot.size() ? x.qdot.cwiseAbs().maxCoeff() : 0.0);
   for (const robots::link_state<mpfr50>& l : s) w = std::max(w, static_cast<double>(l.omega.norm()));
   out.scale_bias = out.scale * w * w;
+  return out;
+}
+
+namespace {
+/// The kinematic reference rounded once to double.
+struct kinematic_terms {
+  Eigen::MatrixXd poses, jacobians;
+  Eigen::VectorXd bias_accelerations;  ///< with_bias only
+  double scale = 0, scale_bias = 0;
+  int moving_links = 0;
+};
+
+kinematic_terms kinematics_of(const robots::robot& robot, const dynamics_state& x, bool with_bias = false) {
+  const kinematic_reference r = kinematic_reference_at(robot, x, with_bias);
+  kinematic_terms out;
+  out.poses = narrowed(r.poses);
+  out.jacobians = narrowed(r.jacobians);
+  if (with_bias) out.bias_accelerations = narrowed(r.bias_accelerations);
+  out.scale = r.scale;
+  out.scale_bias = r.scale_bias;
+  out.moving_links = r.moving_links;
   return out;
 }
 }  // namespace

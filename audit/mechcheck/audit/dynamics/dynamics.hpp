@@ -271,6 +271,21 @@ struct reference_terms {
 };
 reference_terms reference_terms_at(const robots::robot& robot, const dynamics_state& state);
 
+/// The kinematics of `robot` at `state` in mpfr50 (dynamics_quantity's frame_poses,
+/// frame_jacobians and, with_bias, frame_bias_accelerations), its links in its order, and
+/// their scales. Always the robot given, where a library holds another (MuJoCo's compiler
+/// changes the inertias, not the bodies' frames, which it holds as written; the held robot's
+/// frames come back through roll, pitch and yaw, which lose digits near a pitch of +-pi/2:
+/// 179 eps on a random robot).
+struct kinematic_reference {
+  dynamic_matrix<mpfr50> poses, jacobians;
+  dynamic_vector<mpfr50> bias_accelerations;  ///< with_bias only
+  double scale = 0, scale_bias = 0;           ///< poses and Jacobians; Jdot qdot
+  int moving_links = 0;
+};
+kinematic_reference kinematic_reference_at(const robots::robot& robot, const dynamics_state& state,
+                                           bool with_bias = false);
+
 /// A generated robot's state (generators::robot_case) as a dynamics_state.
 dynamics_state state_of(const generators::robot_case& c);
 

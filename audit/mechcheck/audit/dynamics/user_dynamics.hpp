@@ -114,6 +114,18 @@ template <class M, class T>
 concept offers_forward = requires(M& m, const dynamic_vector<T>& x) {
   { m.forward(x, x, x) } -> std::convertible_to<dynamic_vector<T>>;
 };
+template <class M, class T>
+concept offers_frame_poses = requires(M& m, const dynamic_vector<T>& x) {
+  { m.frame_poses(x) } -> std::convertible_to<dynamic_matrix<T>>;
+};
+template <class M, class T>
+concept offers_frame_jacobians = requires(M& m, const dynamic_vector<T>& x) {
+  { m.frame_jacobians(x) } -> std::convertible_to<dynamic_matrix<T>>;
+};
+template <class M, class T>
+concept offers_frame_bias_accelerations = requires(M& m, const dynamic_vector<T>& x) {
+  { m.frame_bias_accelerations(x, x) } -> std::convertible_to<dynamic_vector<T>>;
+};
 
 }  // namespace detail
 
@@ -124,8 +136,13 @@ concept offers_forward = requires(M& m, const dynamic_vector<T>& x) {
 ///   dynamic_vector<T> bias(const dynamic_vector<T>& q, const dynamic_vector<T>& qdot);
 ///   dynamic_vector<T> inverse(q, qdot, qddot);
 ///   dynamic_vector<T> forward(q, qdot, tau);
-/// (found by their signatures; at least one). check<T> holds it in tier T to the exact
-/// Lagrangian at one robot and state.
+/// (found by their signatures; at least one), and of the kinematics (dynamics_quantity's
+/// layouts, the links in the robot's order)
+///   dynamic_matrix<T> frame_poses(q);               12 x L
+///   dynamic_matrix<T> frame_jacobians(q);           6 L x v
+///   dynamic_vector<T> frame_bias_accelerations(q, qdot);   6 L: Jdot qdot
+/// check<T> holds it in tier T to the exact Lagrangian and forward kinematics at one robot
+/// and state.
 template <template <class> class Model>
 struct templated_dynamics {
   std::string name, origin;
@@ -169,6 +186,23 @@ struct templated_dynamics {
       out.residuals.push_back(detail::tier_residual<T>(
           dynamics_quantity::forward, dynamic_matrix<T>(model->forward(q, qdot, detail::in_tier<T>(x.tau))),
           dynamic_matrix<mpfr50>(e.qddot), e.scale_forward, n, who));
+    constexpr bool poses = detail::offers_frame_poses<Model<T>, T>, jacobians = detail::offers_frame_jacobians<Model<T>, T>,
+                   accelerations = detail::offers_frame_bias_accelerations<Model<T>, T>;
+    if constexpr (poses || jacobians || accelerations) {
+      const kinematic_reference k = kinematic_reference_at(robot, x, accelerations);
+      if constexpr (poses)
+        out.residuals.push_back(detail::tier_residual<T>(dynamics_quantity::frame_poses,
+                                                         dynamic_matrix<T>(model->frame_poses(q)), k.poses, k.scale,
+                                                         k.moving_links, who));
+      if constexpr (jacobians)
+        out.residuals.push_back(detail::tier_residual<T>(dynamics_quantity::frame_jacobians,
+                                                         dynamic_matrix<T>(model->frame_jacobians(q)), k.jacobians,
+                                                         k.scale, k.moving_links, who));
+      if constexpr (accelerations)
+        out.residuals.push_back(detail::tier_residual<T>(
+            dynamics_quantity::frame_bias_accelerations, dynamic_matrix<T>(model->frame_bias_accelerations(q, qdot)),
+            dynamic_matrix<mpfr50>(k.bias_accelerations), k.scale_bias, k.moving_links, who));
+    }
     return out;
   }
 
