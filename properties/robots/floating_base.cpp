@@ -1,4 +1,5 @@
 #include "mechcheck/robots/floating.hpp"
+#include "mechcheck/robots/recursive.hpp"
 #include "robots/robots.hpp"
 
 namespace {
@@ -159,5 +160,127 @@ struct floating_momentum {
   }
 };
 MECHCHECK_LAW(floating_momentum);
+
+/// The base's pose at t under a constant body twist u = (v_b; w_b) (udot = 0), in the AD
+/// scalar S of t: R(t) = R0 Exp(t w_b) by Rodrigues' formula, p(t) = p0 + t R0 v_b + t^2/2 R0
+/// (w_b x v_b), exact to second order at t = 0 (pdot = R v_b, pddot = d/dt (R v_b) = R (w_b x
+/// v_b)).
+template <class S, class T>
+rb::base_pose<S> base_along(const rb::base_pose<T>& b, const dynamic_vector<T>& u, const S& t) {
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  const mc::vector3<T> v(u(0), u(1), u(2)), w(u(3), u(4), u(5));
+  const T theta = sqrt(T(w.squaredNorm()));
+  mc::matrix3<T> k;
+  k << T(0), -w(2), w(1), w(2), T(0), -w(0), -w(1), w(0), T(0);
+  const mc::matrix3<T> k2 = k * k;
+  S a = mc::lift<S>(0), c = mc::lift<S>(0);
+  if (theta > 0) {
+    a = sin(t * mc::lift<S>(theta)) / mc::lift<S>(theta);
+    c = (mc::lift<S>(1) - cos(t * mc::lift<S>(theta))) / mc::lift<S>(T(theta * theta));
+  }
+  const mc::vector3<T> first = b.rotation * v, second = b.rotation * mc::vector3<T>(w.cross(v));
+  rb::base_pose<S> out;
+  for (int i = 0; i < 3; ++i) {
+    out.position(i) = mc::lift<S>(b.position(i)) + t * mc::lift<S>(first(i)) + t * t * mc::lift<S>(T(second(i) / 2));
+    for (int j = 0; j < 3; ++j) {
+      S e = mc::lift<S>(T(i == j ? 1 : 0)) + a * mc::lift<S>(k(i, j)) + c * mc::lift<S>(k2(i, j));
+      out.rotation(i, j) = e;
+    }
+  }
+  out.rotation = mc::matrix3<S>(rb::detail::times(rb::detail::lifted<S>(b.rotation), out.rotation));
+  return out;
+}
+
+/// Link l's origin and rotation (12 numbers, rotation row by row) at t along the motion: the
+/// base along its twist, the joints along q + t qdot.
+template <class S, class T>
+dynamic_vector<S> link_pose_along(const floating_sample<T>& s, const S& t, std::size_t l) {
+  const Eigen::Index n = s.q.size();
+  dynamic_vector<S> q(n), still = dynamic_vector<S>::Constant(n, mc::lift<S>(0));
+  for (Eigen::Index i = 0; i < n; ++i) q(i) = mc::lift<S>(s.q(i)) + t * mc::lift<S>(s.u(6 + i));
+  const dynamic_vector<S> rest = dynamic_vector<S>::Constant(6, mc::lift<S>(0));
+  const rb::link_state<S> st =
+      rb::link_states(s.model, q, still, rb::detail::floating_root(base_along(s.base, s.u, t), rest))[l];
+  dynamic_vector<S> out(12);
+  for (int i = 0; i < 3; ++i) out(i) = st.origin(i);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) out(3 + 3 * i + j) = st.rotation(i, j);
+  return out;
+}
+
+template <class T>
+mc::matrix3<T> rows_of(const dynamic_vector<T>& pose) {
+  mc::matrix3<T> r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r(i, j) = pose(3 + 3 * i + j);
+  return r;
+}
+
+template <class T>
+mc::vector3<T> vee_of(const mc::matrix3<T>& a) {
+  return mc::vector3<T>(a(2, 1) - a(1, 2), a(0, 2) - a(2, 0), a(1, 0) - a(0, 1)) / T(2);
+}
+
+struct floating_jacobian {
+  static law_info info() {
+    return {"robots.floating_jacobian",
+            "On a floating base, each link's twist at u = (v_b; w_b; qdot) (the geometric Jacobian times u) is the "
+            "derivative of its pose along the motion -- the base along its body twist, the joints along q + t qdot "
+            "-- and Jdot u, the links' accelerations at udot = 0 (the base's origin R (w_b x v_b)), is the second "
+            "derivative (eqs 123, 126-129)",
+            {"123", "126", "127", "128", "129"}};
+  }
+  template <class T>
+  static void property() {
+    const floating_sample<T> s(*floating_cases());
+    const rb::robot_model<T>& m = s.model;
+    const Eigen::Index n = s.q.size();
+    const dynamic_vector<T> qdot = s.u.tail(n), still = dynamic_vector<T>::Zero(n);
+    const std::vector<rb::link_state<T>> states = rb::link_states(m, s.q, qdot, rb::detail::floating_root(s.base, s.u));
+    const mc::vector3<T> v_b(s.u(0), s.u(1), s.u(2)), w_b(s.u(3), s.u(4), s.u(5));
+    const rb::detail::link_acceleration<T> root{mc::vector3<T>::Zero(), mc::vector3<T>(s.base.rotation * mc::vector3<T>(w_b.cross(v_b)))};
+    const std::vector<rb::detail::link_acceleration<T>> accelerations =
+        rb::detail::link_accelerations(m, states, s.q, qdot, still, root);
+    // Scales: lengths within L = 1 + |p| + the joints' offsets and slides; speeds within the
+    // sum of |u|; velocities within v L, accelerations v^2 L.
+    double length = 1 + s.c.base.xyz.norm(), speed = 0;
+    for (std::size_t j = 0; j < s.c.joints.robot.joints.size(); ++j) {
+      length += s.c.joints.robot.joints[j].origin.xyz.norm();
+      const int k = m.tree.coordinate[j];
+      if (k >= 0 && s.c.joints.robot.joints[j].type == rb::joint_type::prismatic) length += std::abs(s.c.joints.q[std::size_t(k)]);
+    }
+    for (Eigen::Index i = 0; i < s.u.size(); ++i) speed += std::abs(static_cast<double>(s.u(i)));
+    const T velocity_scale = T(std::max(speed * length, 1e-300)), acceleration_scale = T(std::max(speed * speed * length, 1e-300));
+    const double k = 64.0 * s.links;
+    for (std::size_t l = 0; l < m.description.links.size(); ++l) {
+      const dynamic_vector<T> pose = link_pose_along(s, T(0), l);
+      const dynamic_vector<T> rate =
+          mc::jacobian([&](const dynamic_vector<mc::ad<T>>& t) -> dynamic_vector<mc::ad<T>> { return link_pose_along(s, t(0), l); },
+                       dynamic_vector<T>(dynamic_vector<T>::Zero(1)))
+              .col(0);
+      dynamic_vector<T> second(12);
+      for (int c = 0; c < 12; ++c)
+        second(c) = mc::second_order_expansion(
+                        [&](const dynamic_vector<mc::ad<mc::ad<T>>>& t) -> mc::ad<mc::ad<T>> { return link_pose_along(s, t(0), l)(c); },
+                        dynamic_vector<T>(dynamic_vector<T>::Zero(1)))
+                        .hessian(0, 0);
+      const mc::matrix3<T> r = rows_of(pose);
+      const mc::vector3<T> omega = vee_of<T>(mc::matrix3<T>(rows_of(rate) * r.transpose()));
+      const mc::vector3<T> alpha = vee_of<T>(mc::matrix3<T>(rows_of(second) * r.transpose()));
+      const std::string at = "link " + m.description.links[l].name;
+      for (int i = 0; i < 3; ++i) {
+        const std::string c = "(" + std::to_string(i) + ")";
+        check_close(at + ": v_o" + c + " = d/dt o", states[l].velocity(i), rate(i), velocity_scale, k);
+        check_close(at + ": omega" + c + " = vee(dR/dt R^T)", states[l].omega(i), omega(i), velocity_scale, k);
+        check_close(at + ": (Jdot u)_a" + c + " = d2/dt2 o", accelerations[l].accel(i), second(i), acceleration_scale, 2 * k);
+        check_close(at + ": (Jdot u)_alpha" + c + " = vee(d2R/dt2 R^T)", accelerations[l].alpha(i), alpha(i),
+                    acceleration_scale, 2 * k);
+      }
+    }
+  }
+};
+MECHCHECK_LAW(floating_jacobian);
 
 }  // namespace
