@@ -210,19 +210,6 @@ dynamic_vector<S> link_pose_along(const floating_sample<T>& s, const S& t, std::
   return out;
 }
 
-template <class T>
-mc::matrix3<T> rows_of(const dynamic_vector<T>& pose) {
-  mc::matrix3<T> r;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) r(i, j) = pose(3 + 3 * i + j);
-  return r;
-}
-
-template <class T>
-mc::vector3<T> vee_of(const mc::matrix3<T>& a) {
-  return mc::vector3<T>(a(2, 1) - a(1, 2), a(0, 2) - a(2, 0), a(1, 0) - a(0, 1)) / T(2);
-}
-
 struct floating_jacobian {
   static law_info info() {
     return {"robots.floating_jacobian",
@@ -266,9 +253,9 @@ struct floating_jacobian {
                         [&](const dynamic_vector<mc::ad<mc::ad<T>>>& t) -> mc::ad<mc::ad<T>> { return link_pose_along(s, t(0), l)(c); },
                         dynamic_vector<T>(dynamic_vector<T>::Zero(1)))
                         .hessian(0, 0);
-      const mc::matrix3<T> r = rows_of(pose);
-      const mc::vector3<T> omega = vee_of<T>(mc::matrix3<T>(rows_of(rate) * r.transpose()));
-      const mc::vector3<T> alpha = vee_of<T>(mc::matrix3<T>(rows_of(second) * r.transpose()));
+      const mc::matrix3<T> r = rotation_of(pose);
+      const mc::vector3<T> omega = vee_antisymmetric<T>(mc::matrix3<T>(rotation_of(rate) * r.transpose()));
+      const mc::vector3<T> alpha = vee_antisymmetric<T>(mc::matrix3<T>(rotation_of(second) * r.transpose()));
       const std::string at = "link " + m.description.links[l].name;
       for (int i = 0; i < 3; ++i) {
         const std::string c = "(" + std::to_string(i) + ")";

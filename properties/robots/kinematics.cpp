@@ -58,20 +58,6 @@ dynamic_vector<S> pose_along(const rb::robot_model<T>& m, const dynamic_vector<T
   return out;
 }
 
-/// vee of the antisymmetric part of A: (A - A^T)/2 = [w]x.
-template <class T>
-mc::vector3<T> vee_antisymmetric(const mc::matrix3<T>& a) {
-  return mc::vector3<T>(a(2, 1) - a(1, 2), a(0, 2) - a(2, 0), a(1, 0) - a(0, 1)) / T(2);
-}
-
-template <class T>
-mc::matrix3<T> rotation_of(const dynamic_vector<T>& pose) {
-  mc::matrix3<T> r;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) r(i, j) = pose(3 + 3 * i + j);
-  return r;
-}
-
 /// A point on a link, in its frame: dyadic, exact in every tier.
 Eigen::Vector3d draw_point() { return Eigen::Vector3d(*gen::dyadic(-1, 1), *gen::dyadic(-1, 1), *gen::dyadic(-1, 1)); }
 

@@ -60,6 +60,21 @@ inline rc::Gen<gen::robot_case> dressed_robot_cases(int max_links = 4) {
   });
 }
 
+/// vee of the antisymmetric part of A: (A - A^T)/2 = [w]x.
+template <class T>
+mc::vector3<T> vee_antisymmetric(const mc::matrix3<T>& a) {
+  return mc::vector3<T>(a(2, 1) - a(1, 2), a(0, 2) - a(2, 0), a(1, 0) - a(0, 1)) / T(2);
+}
+
+/// The rotation of a pose written as 12 numbers (a point, then R row by row).
+template <class T>
+mc::matrix3<T> rotation_of(const dynamic_vector<T>& pose) {
+  mc::matrix3<T> r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r(i, j) = pose(3 + 3 * i + j);
+  return r;
+}
+
 template <class T>
 T max_abs(const dynamic_matrix<T>& m) {
   T out = T(0);
