@@ -184,7 +184,9 @@ TEST(dynamics_audit, every_library_with_kinematics_gives_the_arms_frames_and_jac
   x.qdot = Eigen::Vector2d(1.1, 0.4);
   x.qddot = Eigen::Vector2d(-0.5, 2.0);
   x.tau = Eigen::Vector2d(3.0, -1.0);
-  const auto [poses, jacobians] = arm_kinematics(l1, Eigen::Vector2d(x.q));
+  // Named, not a structured binding: Clang 14 does not capture bindings in a lambda.
+  const std::pair<Eigen::MatrixXd, Eigen::MatrixXd> frames = arm_kinematics(l1, Eigen::Vector2d(x.q));
+  const Eigen::MatrixXd &poses = frames.first, &jacobians = frames.second;
   const Eigen::MatrixXd accelerations = arm_bias_accelerations(l1, Eigen::Vector2d(x.q), Eigen::Vector2d(x.qdot));
   const auto closed = [&](audit::dynamics_quantity q) -> const Eigen::MatrixXd& {
     return q == audit::dynamics_quantity::frame_poses ? poses
