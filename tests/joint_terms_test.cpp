@@ -134,8 +134,9 @@ TEST(dynamics_audit, dart_applies_the_damping_implicitly_with_its_time_step_as_i
   // DART's joint damping is -d (qdot + h qddot), h the Skeleton's time step (Joint.hpp,
   // GenericJoint::updateForceID): its inverse dynamics is the arm's closed form plus h d qddot,
   // its forward dynamics solves (M + h D) qddot = tau - h_bias. At DART's own default h =
-  // 0.001 s that term (here 1e-3 * 0.5 * 0.5) is 1e12 eps of the force's scale, and the
-  // adapter's default h = 2^-80 s puts it under rounding (the test above holds it there).
+  // 0.001 s that term (here up to 1e-3 * 0.25 * 2 = 5e-4) is 3e10 eps of the force's scale
+  // (m1 + m2) g 2, and the adapter's default h = 2^-80 s puts it under rounding (the test
+  // above holds it there).
   const double m1 = 2, m2 = 1.5, l1 = 1, c1 = 0.5, c2 = 0.375, i1 = 0.25, i2 = 0.0625, g = 9.81, h = 1e-3;
   const Eigen::Vector2d damping(0.5, 0.25);
   rb::robot r = two_link_arm(m1, m2, l1, c1, c2, i1, i2);
