@@ -130,9 +130,13 @@ TEST(dynamics_audit, every_library_gives_the_two_link_arms_closed_form) {
     ASSERT_TRUE(c.refused.empty()) << library.name << ": " << c.refused;
     // Every library offers forward dynamics; Bullet's core nothing else.
     ASSERT_FALSE(c.residuals.empty()) << library.name;
-    // Kinematics: frames and Jacobians in KDL, MuJoCo, DART and Simbody, Jdot qdot in all but MuJoCo.
-    const std::size_t kinematics =
-        library.name == "kdl" || library.name == "dart" || library.name == "simbody" ? 3 : library.name == "mujoco" ? 2 : 0;
+    // Kinematics: frames and Jacobians in KDL, MuJoCo, DART and Simbody, Jdot qdot in all but
+    // MuJoCo; the centre of mass and J_c in MuJoCo, DART and Simbody, A_G in MuJoCo and Simbody.
+    const std::size_t kinematics = library.name == "kdl"       ? 3
+                                   : library.name == "dart"    ? 5
+                                   : library.name == "simbody" ? 6
+                                   : library.name == "mujoco"  ? 5
+                                                               : 0;
     EXPECT_EQ(c.residuals.size(), library.name == "bullet" ? 1u : 4u + kinematics) << library.name;
     EXPECT_EQ(c.residuals[c.residuals.size() - kinematics - 1].quantity, audit::dynamics_quantity::forward)
         << library.name;
@@ -176,6 +180,34 @@ Eigen::VectorXd arm_bias_accelerations(double l1, const Eigen::Vector2d& q, cons
   return out;
 }
 
+/// The arm's centre of mass, J_c and A_G (the centres of mass at x1 = R_y(q1) (0, 0, -c1) and
+/// x2 = elbow + R_y(q1 + q2) (0, 0, -c2), their derivatives in closed form; each inertia's y
+/// moment i about the hinges' y, which R_y keeps: the spin i omega e_y; the orbit's angular
+/// momentum about c only along y, (a x b)_y = a_z b_x - a_x b_z).
+struct arm_mass_terms {
+  Eigen::MatrixXd com, com_jacobian, momentum_matrix;
+};
+arm_mass_terms arm_mass(double m1, double m2, double l1, double c1, double c2, double i1, double i2,
+                        const Eigen::Vector2d& q) {
+  const double s1 = std::sin(q(0)), k1 = std::cos(q(0)), s12 = std::sin(q(0) + q(1)), k12 = std::cos(q(0) + q(1));
+  const Eigen::Vector3d x1(-c1 * s1, 0, -c1 * k1), x2(-l1 * s1 - c2 * s12, 0, -l1 * k1 - c2 * k12);
+  Eigen::Matrix<double, 3, 2> d1, d2;  // dx/dq
+  d1 << -c1 * k1, 0, 0, 0, c1 * s1, 0;
+  d2 << -l1 * k1 - c2 * k12, -c2 * k12, 0, 0, l1 * s1 + c2 * s12, c2 * s12;
+  const double m = m1 + m2;
+  arm_mass_terms out;
+  const Eigen::Vector3d c = (m1 * x1 + m2 * x2) / m;
+  out.com = c;
+  out.com_jacobian = (m1 * d1 + m2 * d2) / m;
+  out.momentum_matrix = Eigen::MatrixXd::Zero(6, 2);
+  out.momentum_matrix.topRows<3>() = m1 * d1 + m2 * d2;
+  const Eigen::Vector3d r1 = x1 - c, r2 = x2 - c;
+  for (int k = 0; k < 2; ++k)
+    out.momentum_matrix(4, k) = (k == 0 ? i1 : 0.0) + i2 + m1 * (r1(2) * d1(0, k) - r1(0) * d1(2, k)) +
+                                m2 * (r2(2) * d2(0, k) - r2(0) * d2(2, k));
+  return out;
+}
+
 TEST(dynamics_audit, every_library_with_kinematics_gives_the_arms_frames_and_jacobians_in_closed_form) {
   const double l1 = 1.25;
   const rb::robot r = two_link_arm(2, 1.5, l1, 0.5, 0.375, 0.25, 0.0625);
@@ -188,22 +220,34 @@ TEST(dynamics_audit, every_library_with_kinematics_gives_the_arms_frames_and_jac
   const std::pair<Eigen::MatrixXd, Eigen::MatrixXd> frames = arm_kinematics(l1, Eigen::Vector2d(x.q));
   const Eigen::MatrixXd &poses = frames.first, &jacobians = frames.second;
   const Eigen::MatrixXd accelerations = arm_bias_accelerations(l1, Eigen::Vector2d(x.q), Eigen::Vector2d(x.qdot));
+  const arm_mass_terms mass = arm_mass(2, 1.5, l1, 0.5, 0.375, 0.25, 0.0625, Eigen::Vector2d(x.q));
+  using dq = audit::dynamics_quantity;
   const auto closed = [&](audit::dynamics_quantity q) -> const Eigen::MatrixXd& {
-    return q == audit::dynamics_quantity::frame_poses ? poses
-           : q == audit::dynamics_quantity::frame_jacobians ? jacobians
-                                                            : accelerations;
+    return q == dq::frame_poses ? poses
+           : q == dq::frame_jacobians ? jacobians
+           : q == dq::frame_bias_accelerations ? accelerations
+           : q == dq::centre_of_mass ? mass.com
+           : q == dq::com_jacobian   ? mass.com_jacobian
+                                     : mass.momentum_matrix;
   };
   // The reference within 2 eps of the scale max(1, l1 + c2) of the closed form (which rounds
   // its sines and cosines once, and l1 times them once; Jdot qdot's scale also carries w^2,
-  // w = 1.5 the forearm's rate); every library that offers them within its budget, 16 n eps
-  // of the scale, of it.
-  const auto kinematic = {audit::dynamics_quantity::frame_poses, audit::dynamics_quantity::frame_jacobians,
-                          audit::dynamics_quantity::frame_bias_accelerations};
+  // w = 1.5 the forearm's rate; A_G's is max(sum m r^2 + |I|, sum m lever), r the links' paths
+  // to their centres of mass, 0.5 and 1.625, and its closed form sums four rounded products a
+  // column: 4 eps); every library that offers them within its budget, 16 n eps of the scale,
+  // of it.
+  const double lever = l1 + 0.375, momentum_scale = std::max(2 * 0.5 * 0.5 + 0.5 + 1.5 * lever * lever + 0.125, 3.5 * lever);
+  const auto kinematic = {dq::frame_poses,    dq::frame_jacobians, dq::frame_bias_accelerations,
+                          dq::centre_of_mass, dq::com_jacobian,    dq::centroidal_momentum_matrix};
   for (const auto q : kinematic) {
     const audit::dynamics_residual ref = audit::reference_only(q, r, x);
-    EXPECT_EQ(ref.scale, (l1 + 0.375) * (q == audit::dynamics_quantity::frame_bias_accelerations ? 1.5 * 1.5 : 1.0));
-    EXPECT_LE((ref.reference - closed(q)).cwiseAbs().maxCoeff(), 2 * 0x1p-52 * ref.scale)
+    EXPECT_EQ(ref.scale, q == dq::frame_bias_accelerations      ? lever * 1.5 * 1.5
+                         : q == dq::centroidal_momentum_matrix ? momentum_scale
+                                                               : lever)
         << audit::dynamics_quantity_name(q);
+    EXPECT_LE((ref.reference - closed(q)).cwiseAbs().maxCoeff(),
+              (q == dq::centroidal_momentum_matrix ? 4 : 2) * 0x1p-52 * ref.scale)
+        << audit::dynamics_quantity_name(q) << "\n" << ref.reference << "\n" << closed(q);
   }
   int offered = 0;
   for (const audit::dynamics_library& library : audit::dynamics_found())
@@ -217,7 +261,7 @@ TEST(dynamics_audit, every_library_with_kinematics_gives_the_arms_frames_and_jac
           << library.name << ": " << audit::dynamics_quantity_name(res.quantity) << "\n" << res.library;
     }
 #ifdef MECHCHECK_HAVE_MUJOCO
-  EXPECT_GE(offered, 2) << "MuJoCo gives both";
+  EXPECT_GE(offered, 5) << "MuJoCo gives all but Jdot qdot";
 #else
   (void)offered;
 #endif
@@ -265,6 +309,19 @@ TEST(dynamics_audit, a_free_rigid_body_gives_newton_and_euler_in_every_library_w
       // Jdot qdot at udot = 0: the origin's d/dt (R v_b) = R (w_b x v_b), no angular one.
       Eigen::MatrixXd bias_acceleration = Eigen::MatrixXd::Zero(6, 1);
       bias_acceleration.topRows<3>() = rotation * Eigen::Vector3d(u.segment<3>(3)).cross(Eigen::Vector3d(u.head<3>()));
+      // The centre of mass p + R c; cdot = R (v_b + w_b x c): J_c = [R, -R [c]x]; A_G = [m J_c;
+      // 0, R I_c] (the spin about the centre of mass, I_c = R_o I R_o^T in the body's axes, of
+      // the body the library holds).
+      const rb::inertial& body = *held.links.front().body;
+      const Eigen::Vector3d c = body.origin.xyz;
+      Eigen::Matrix3d lever;
+      lever << 0, -c(2), c(1), c(2), 0, -c(0), -c(1), c(0), 0;
+      const Eigen::Matrix3d ro = rb::rpy_rotation<double>(body.origin.rpy);
+      const Eigen::MatrixXd com = at.xyz + rotation * c;
+      Eigen::MatrixXd com_jacobian(3, 6), momentum_matrix = Eigen::MatrixXd::Zero(6, 6);
+      com_jacobian << rotation, -rotation * lever;
+      momentum_matrix.topRows<3>() = body.mass * com_jacobian;
+      momentum_matrix.bottomRightCorner<3, 3>() = rotation * ro * body.inertia * ro.transpose();
       const Eigen::MatrixXd closed = res.quantity == audit::dynamics_quantity::mass_matrix ? want.m
                                      : res.quantity == audit::dynamics_quantity::inverse ? Eigen::MatrixXd(want.q)
                                      : res.quantity == audit::dynamics_quantity::forward ? Eigen::MatrixXd(rate)
@@ -272,6 +329,10 @@ TEST(dynamics_audit, a_free_rigid_body_gives_newton_and_euler_in_every_library_w
                                      : res.quantity == audit::dynamics_quantity::frame_jacobians ? jacobian
                                      : res.quantity == audit::dynamics_quantity::frame_bias_accelerations
                                          ? bias_acceleration
+                                     : res.quantity == audit::dynamics_quantity::centre_of_mass ? com
+                                     : res.quantity == audit::dynamics_quantity::com_jacobian   ? com_jacobian
+                                     : res.quantity == audit::dynamics_quantity::centroidal_momentum_matrix
+                                         ? momentum_matrix
                                          : res.reference;
       EXPECT_LE((res.library - closed).cwiseAbs().maxCoeff(), res.budget * eps * res.scale) << library.name << ": " << what;
     }

@@ -134,6 +134,8 @@ class dart_model final : public dynamics_model {
       if (!b) throw robot_refused("dart: the Skeleton has no BodyNode " + l.name);
       body_.push_back(b);
     }
+    const robots::link& root = r.links[std::size_t(robots::validate(r).root)];
+    if (!r.floating && !root.body) default_root_ = skeleton_->getBodyNode(root.name);
   }
 
   std::optional<Eigen::MatrixXd> mass_matrix(const Eigen::VectorXd& q) override {
@@ -212,6 +214,28 @@ class dart_model final : public dynamics_model {
     }
     return out;
   }
+  /// Skeleton::getCOM, less a massless welded root's default mass (robot_skeleton): DART
+  /// counts it at its centre of mass, which never moves; M c less m_root c_root over M - m_root.
+  std::optional<Eigen::VectorXd> centre_of_mass(const Eigen::VectorXd& q) override {
+    set_positions(q);
+    const double m = skeleton_->getMass(), root = default_root_ ? default_root_->getMass() : 0.0;
+    if (!(m - root > 0)) return std::nullopt;
+    Eigen::Vector3d c = skeleton_->getCOM();
+    if (default_root_) c = (m * c - root * default_root_->getCOM()) / (m - root);
+    return Eigen::VectorXd(c);
+  }
+  /// Skeleton::getCOMLinearJacobian (in the world), times M / (M - m_root) where DART counts a
+  /// massless welded root's default mass, whose velocity is zero.
+  std::optional<Eigen::MatrixXd> com_jacobian(const Eigen::VectorXd& q) override {
+    set_positions(q);
+    const double m = skeleton_->getMass(), root = default_root_ ? default_root_->getMass() : 0.0;
+    if (!(m - root > 0)) return std::nullopt;
+    Eigen::MatrixXd j = skeleton_->getCOMLinearJacobian();
+    if (default_root_) j *= m / (m - root);
+    Eigen::MatrixXd out(3, n_);
+    for (int i = 0; i < n_; ++i) out.col(order_.order[std::size_t(i)]) = j.col(i);
+    return out;
+  }
 
  private:
   /// q in DART's positions; a floating base's pose (q's head: position, quaternion w x y z,
@@ -232,6 +256,8 @@ class dart_model final : public dynamics_model {
 
   coordinate_order order_;  ///< the Skeleton's degrees of freedom (filled by robot_skeleton)
   SkeletonPtr skeleton_;
+  /// A fixed robot's massless root, on which DART keeps its default mass 1 (robot_skeleton).
+  BodyNode* default_root_ = nullptr;
   int n_ = 0;  ///< the Skeleton's degrees of freedom
   bool floating_ = false;
   std::vector<BodyNode*> body_;  ///< each link's BodyNode
@@ -267,7 +293,9 @@ dynamics_library dynamics(double time_step) {
              "velocity in its own frame, angular first, (w_b; v_b), and their rates; forces (n_b; f_b)); each "
              "link's frame by BodyNode::getWorldTransform, its Jacobian by Skeleton::getWorldJacobian (the "
              "BodyNode's origin, rows (omega; v) in the world), Jdot qdot by Skeleton::getJacobianClassicDeriv "
-             "times the velocities";
+             "times the velocities; the centre of mass by Skeleton::getCOM and J_c by getCOMLinearJacobian (less "
+             "a massless welded root's default mass 1, which DART counts at the root's fixed centre of mass: "
+             "(M c - m_root c_root) / (M - m_root) and J_c M / (M - m_root)); no centroidal momentum matrix";
   l.no_floating_base.clear();
   l.sets_damping = true;
   l.no_joint_terms = "DART 6.12 has no rotor inertia (its joints carry damping, spring and Coulomb friction only)";

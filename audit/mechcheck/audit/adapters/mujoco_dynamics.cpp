@@ -195,6 +195,10 @@ class mujoco_model final : public dynamics_model {
       dof_[std::size_t(t.coordinate[j] + base)] = m_->jnt_dofadr[id];
     }
     if (!kinematics) return;
+    // A fixed root is the world body, whose mass MuJoCo drops: the centre of mass's quantities
+    // are MuJoCo's for a robot whose root carries none.
+    const auto& root_body = r.links[std::size_t(t.root)].body;
+    root_mass_dropped_ = !floating_ && root_body && root_body->mass > 0;
     // Each link's body: a fixed base's root is the world body (0), welded where the robot is.
     for (std::size_t l = 0; l < r.links.size(); ++l) {
       const int id = !floating_ && static_cast<int>(l) == t.root ? 0 : mj_name2id(m_.get(), mjOBJ_BODY, r.links[l].name.c_str());
@@ -259,9 +263,7 @@ class mujoco_model final : public dynamics_model {
   /// columns MuJoCo's velocities, each row through the base's convention (J = J_mj T).
   std::optional<Eigen::MatrixXd> frame_jacobians(const Eigen::VectorXd& q) override {
     if (body_.empty()) return std::nullopt;
-    set(q, Eigen::VectorXd::Zero(nv()));
-    mj_kinematics(m_.get(), d_.get());
-    mj_comPos(m_.get(), d_.get());
+    place(q);
     const std::size_t nv_mj = std::size_t(m_->nv);
     std::vector<mjtNum> jacp(3 * nv_mj), jacr(3 * nv_mj);
     Eigen::MatrixXd out(6 * static_cast<Eigen::Index>(body_.size()), nv());
@@ -276,9 +278,59 @@ class mujoco_model final : public dynamics_model {
     }
     return out;
   }
+  /// subtree_com of the world body (every body's) after mj_kinematics and mj_comPos.
+  std::optional<Eigen::VectorXd> centre_of_mass(const Eigen::VectorXd& q) override {
+    if (!offers_com()) return std::nullopt;
+    place(q);
+    return Eigen::VectorXd(Eigen::Map<const Eigen::Vector3d>(d_->subtree_com));
+  }
+  /// mj_jacSubtreeCom of the world body after mj_kinematics and mj_comPos, its rows through the
+  /// base's convention as the Jacobians'.
+  std::optional<Eigen::MatrixXd> com_jacobian(const Eigen::VectorXd& q) override {
+    if (!offers_com()) return std::nullopt;
+    place(q);
+    const std::size_t nv_mj = std::size_t(m_->nv);
+    std::vector<mjtNum> jacp(3 * nv_mj);
+    mj_jacSubtreeCom(m_.get(), d_.get(), jacp.data(), 0);
+    Eigen::MatrixXd out(3, nv());
+    for (int row = 0; row < 3; ++row) {
+      Eigen::VectorXd in_mj(nv());
+      for (int i = 0; i < nv(); ++i) in_mj(i) = jacp[std::size_t(row) * nv_mj + std::size_t(dof_[std::size_t(i)])];
+      out.row(row) = frame_.from_library(in_mj).transpose();
+    }
+    return out;
+  }
+  /// Column k: the world body's subtree_linvel times its subtree mass and subtree_angmom (about
+  /// subtree_com) after mj_subtreeVel at qvel = e_k (mj_kinematics, mj_comPos and mj_comVel
+  /// first, whose cvel it reads), its rows through the base's convention.
+  std::optional<Eigen::MatrixXd> centroidal_momentum_matrix(const Eigen::VectorXd& q) override {
+    if (!offers_com()) return std::nullopt;
+    place(q);
+    Eigen::MatrixXd in_mj(6, nv());
+    for (int k = 0; k < nv(); ++k) {
+      mju_zero(d_->qvel, m_->nv);
+      d_->qvel[dof_[std::size_t(k)]] = 1;
+      mj_comVel(m_.get(), d_.get());
+      mj_subtreeVel(m_.get(), d_.get());
+      for (int i = 0; i < 3; ++i) {
+        in_mj(i, k) = d_->subtree_linvel[i] * m_->body_subtreemass[0];
+        in_mj(3 + i, k) = d_->subtree_angmom[i];
+      }
+    }
+    Eigen::MatrixXd out(6, nv());
+    for (int row = 0; row < 6; ++row) out.row(row) = frame_.from_library(Eigen::VectorXd(in_mj.row(row).transpose())).transpose();
+    return out;
+  }
 
  private:
   int nv() const { return static_cast<int>(dof_.size()); }
+  /// The bodies placed at q, at rest: mj_kinematics, then mj_comPos (cdof, subtree_com).
+  void place(const Eigen::VectorXd& q) {
+    set(q, Eigen::VectorXd::Zero(nv()));
+    mj_kinematics(m_.get(), d_.get());
+    mj_comPos(m_.get(), d_.get());
+  }
+  bool offers_com() const { return !body_.empty() && !root_mass_dropped_ && m_->body_subtreemass[0] > 0; }
   /// The state, and nothing of an earlier call left: the applied forces, the accelerations
   /// and the warnings cleared (mj_resetData would clear the whole arena, about 0.25 ms a call).
   void set(const Eigen::VectorXd& q, const Eigen::VectorXd& u) {
@@ -320,6 +372,7 @@ class mujoco_model final : public dynamics_model {
   /// (and force, acceleration) address of u(i).
   std::vector<int> qpos_, dof_;
   std::vector<int> body_;  ///< each link's body (none: the model offers no kinematics)
+  bool root_mass_dropped_ = false;  ///< a fixed root with a body (the world body's mass MuJoCo drops)
 };
 }  // namespace
 
@@ -355,7 +408,11 @@ dynamics_library dynamics() {
                  "mj_fullM of qM, qfrc_bias and qacc after mj_forward, qfrc_inverse after mj_inverse, on a model "
                  "built as MJCF (each link a body at its joint's origin, its inertia turned into the body frame as "
                  "fullinertia, hinge and slide joints, no limits or geoms); each link's frame as xpos and xmat after "
-                 "mj_kinematics, its Jacobian by mj_jacBody after mj_kinematics and mj_comPos",
+                 "mj_kinematics, its Jacobian by mj_jacBody after mj_kinematics and mj_comPos; the centre of mass as the "
+                 "world body's subtree_com, J_c by mj_jacSubtreeCom of the world body, A_G column by column as its "
+                 "subtree mass times subtree_linvel and subtree_angmom after mj_comVel and mj_subtreeVel at qvel "
+                 "= e_k (not offered where a fixed root carries a body: the root is the world body, whose mass "
+                 "MuJoCo drops)",
                  robot_mjcf, true);
   l.sets_armature = true;
   l.origin += freejoint;

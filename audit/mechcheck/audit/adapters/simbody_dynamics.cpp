@@ -144,8 +144,37 @@ class model final : public dynamics_model {
       a += library_jacobians(q) * f.acceleration_to_library(Eigen::VectorXd::Zero(qdot.size()));
     return a;
   }
+  /// calcSystemMassCenterLocationInGround: every body's (a welded root's too).
+  std::optional<Eigen::VectorXd> centre_of_mass(const Eigen::VectorXd& q) override {
+    const Eigen::VectorXd qs = positions(q);
+    Eigen::Vector3d c;
+    guarded("calcSystemMassCenterLocationInGround", [&] { d_->centre_of_mass(qs.data(), c.data()); });
+    return Eigen::VectorXd(c);
+  }
+  /// calcSystemMassCenterVelocityInGround at u = e_k: column k in Simbody's u, read through
+  /// the Free mobilizer's map as the Jacobians are.
+  std::optional<Eigen::MatrixXd> com_jacobian(const Eigen::VectorXd& q) override {
+    return library_momenta(q).topRows(3);
+  }
+  /// calcSystemCentralMomentum at u = e_k: (linear; angular about the mass centre), Simbody's
+  /// SpatialVec (angular; linear) turned over.
+  std::optional<Eigen::MatrixXd> centroidal_momentum_matrix(const Eigen::VectorXd& q) override {
+    return library_momenta(q).bottomRows(6);
+  }
 
  private:
+  /// The bridge's central_momenta, its columns the robot's mobilities through the base's map.
+  Eigen::MatrixXd library_momenta(const Eigen::VectorXd& q) const {
+    const Eigen::VectorXd qs = positions(q);
+    const int nu = n_ + base();
+    Eigen::Matrix<double, 9, Eigen::Dynamic, Eigen::RowMajor> h(9, nu);
+    guarded("calcSystemCentralMomentum", [&] { d_->central_momenta(qs.data(), h.data()); });
+    const base_map f = frame(q, Eigen::VectorXd::Zero(nu));
+    Eigen::MatrixXd cols(9, nu);
+    for (Eigen::Index r = 0; r < 9; ++r)
+      cols.row(r) = f.from_library(out(Eigen::VectorXd(h.row(r).transpose()))).transpose();
+    return cols;
+  }
   static std::string one_line(const char* text) {
     std::string s;
     for (const char* c = text; *c; ++c) s += *c == '\n' ? ' ' : *c;
@@ -242,7 +271,10 @@ dynamics_library dynamics() {
              "through the same map); each link's frame by MobilizedBody::getBodyTransform, its Jacobian by "
              "calcFrameJacobian at the body's origin (rows (angular; linear) in the ground; a floating base's "
              "columns through the same map), Jdot qdot by calcBiasForFrameJacobian (at Simbody's udot = 0, plus "
-             "JF times the state's udot = 0 in Simbody's u on a floating base)";
+             "JF times the state's udot = 0 in Simbody's u on a floating base); the centre of mass by "
+             "calcSystemMassCenterLocationInGround (every body's, the welded root's too), J_c and A_G column by "
+             "column from calcSystemMassCenterVelocityInGround and calcSystemCentralMomentum at u = e_k (through "
+             "the same map)";
   l.no_floating_base.clear();
   l.sets_damping = true;
   l.no_joint_terms = "Simbody has no rotor inertia (its mobilizers carry none; a damper is a force element)";

@@ -28,6 +28,9 @@ const char* dynamics_quantity_name(dynamics_quantity q) {
     case dynamics_quantity::frame_poses: return "frame poses";
     case dynamics_quantity::frame_jacobians: return "frame Jacobians";
     case dynamics_quantity::frame_bias_accelerations: return "frame Jdot qdot";
+    case dynamics_quantity::centre_of_mass: return "centre of mass";
+    case dynamics_quantity::com_jacobian: return "COM Jacobian";
+    case dynamics_quantity::centroidal_momentum_matrix: return "centroidal A_G";
   }
   return "?";
 }
@@ -224,6 +227,14 @@ kinematic_reference kinematic_reference_at(const robots::robot& robot, const dyn
     out.poses.block<3, 1>(0, l) = s.origin;
     for (int c = 0; c < 3; ++c) out.poses.block<3, 1>(3 + 3 * c, l) = s.rotation.col(c);
   }
+  // The centre of mass and, column k of J_c and A_G, the momenta at e_k (robots/kinematics.hpp).
+  const robots::detail::momenta<mpfr50> at_rest = robots::detail::momenta_of(m, rest);
+  const bool massive = at_rest.mass > 0;
+  if (massive) {
+    out.com = at_rest.first_moment / at_rest.mass;
+    out.com_jacobian.resize(3, n + base);
+    out.momentum_matrix.resize(6, n + base);
+  }
   // Column k: every link's twist at the velocity e_k (the twist is linear in the velocities).
   out.jacobians.resize(6 * links, n + base);
   for (int k = 0; k < n + base; ++k) {
@@ -234,8 +245,16 @@ kinematic_reference kinematic_reference_at(const robots::robot& robot, const dyn
       out.jacobians.block<3, 1>(6 * l, k) = moving[std::size_t(l)].velocity;
       out.jacobians.block<3, 1>(6 * l + 3, k) = moving[std::size_t(l)].omega;
     }
+    if (!massive) continue;
+    // h_G = (P; L_O - c x P), eq 83 with a = -c.
+    const robots::detail::momenta<mpfr50> p = robots::detail::momenta_of(m, moving);
+    out.com_jacobian.col(k) = p.linear / at_rest.mass;
+    out.momentum_matrix.block<3, 1>(0, k) = p.linear;
+    out.momentum_matrix.block<3, 1>(3, k) = p.angular_about_origin - out.com.head<3>().cross(p.linear);
   }
-  out.scale = std::max(1.0, robots::term_scales(m, joints, robot.floating ? x.q.head<3>().norm() : 0.0).lever);
+  const robots::term_scale terms = robots::term_scales(m, joints, robot.floating ? x.q.head<3>().norm() : 0.0);
+  out.scale = std::max(1.0, terms.lever);
+  out.scale_momentum = std::max(terms.inertia, terms.mass * out.scale);
   out.moving_links = n + (robot.floating ? 1 : 0);
   if (!with_bias) return out;
   // Jdot qdot: each link's classical acceleration at zero accelerations, the root's on a
@@ -271,7 +290,9 @@ namespace {
 struct kinematic_terms {
   Eigen::MatrixXd poses, jacobians;
   Eigen::VectorXd bias_accelerations;  ///< with_bias only
-  double scale = 0, scale_bias = 0;
+  Eigen::VectorXd com;
+  Eigen::MatrixXd com_jacobian, momentum_matrix;
+  double scale = 0, scale_bias = 0, scale_momentum = 0;
   int moving_links = 0;
 };
 
@@ -281,8 +302,12 @@ kinematic_terms kinematics_of(const robots::robot& robot, const dynamics_state& 
   out.poses = narrowed(r.poses);
   out.jacobians = narrowed(r.jacobians);
   if (with_bias) out.bias_accelerations = narrowed(r.bias_accelerations);
+  out.com = narrowed(r.com);
+  out.com_jacobian = narrowed(r.com_jacobian);
+  out.momentum_matrix = narrowed(r.momentum_matrix);
   out.scale = r.scale;
   out.scale_bias = r.scale_bias;
+  out.scale_momentum = r.scale_momentum;
   out.moving_links = r.moving_links;
   return out;
 }
@@ -337,7 +362,10 @@ dynamics_check check_dynamics(const dynamics_library& library, const robots::rob
     out.residuals.push_back(residual_of(dynamics_quantity::forward, *a, e.qddot, e.scale_forward, e.moving_links, who));
   const std::optional<Eigen::MatrixXd> poses = model->frame_poses(x.q), jacobians = model->frame_jacobians(x.q);
   const std::optional<Eigen::VectorXd> accelerations = model->frame_bias_accelerations(x.q, x.qdot);
-  if (poses || jacobians || accelerations) {
+  const std::optional<Eigen::VectorXd> com = model->centre_of_mass(x.q);
+  const std::optional<Eigen::MatrixXd> com_jacobian = model->com_jacobian(x.q),
+                                       momentum_matrix = model->centroidal_momentum_matrix(x.q);
+  if (poses || jacobians || accelerations || com || com_jacobian || momentum_matrix) {
     const kinematic_terms k = kinematics_of(robot, x, accelerations.has_value());
     if (poses)
       out.residuals.push_back(residual_of(dynamics_quantity::frame_poses, *poses, k.poses, k.scale, k.moving_links, who));
@@ -347,6 +375,21 @@ dynamics_check check_dynamics(const dynamics_library& library, const robots::rob
     if (accelerations)
       out.residuals.push_back(residual_of(dynamics_quantity::frame_bias_accelerations, *accelerations,
                                           k.bias_accelerations, k.scale_bias, k.moving_links, who));
+    // A robot without mass has no centre of mass: nothing to hold a library's to.
+    const bool massive = k.com.size() == 3;
+    if (com && massive)
+      out.residuals.push_back(residual_of(dynamics_quantity::centre_of_mass, *com, k.com, k.scale, k.moving_links, who));
+    if (com_jacobian && massive)
+      out.residuals.push_back(
+          residual_of(dynamics_quantity::com_jacobian, *com_jacobian, k.com_jacobian, k.scale, k.moving_links, who));
+    // A_G carries the links' inertias: held to the held robot's, as M is (its frames and
+    // centres of mass are the given robot's, rounded through roll, pitch and yaw).
+    if (momentum_matrix && massive) {
+      const kinematic_terms g = held ? kinematics_of(*held, x) : kinematic_terms{};
+      const kinematic_terms& a = held ? g : k;
+      out.residuals.push_back(residual_of(dynamics_quantity::centroidal_momentum_matrix, *momentum_matrix,
+                                          a.momentum_matrix, a.scale_momentum, a.moving_links, who));
+    }
   }
   return out;
 }
@@ -427,10 +470,19 @@ dynamics_residual reference_only(dynamics_quantity quantity, const robots::robot
                          "reference");
     }
     case dynamics_quantity::frame_poses:
-    case dynamics_quantity::frame_jacobians: {
+    case dynamics_quantity::frame_jacobians:
+    case dynamics_quantity::centre_of_mass:
+    case dynamics_quantity::com_jacobian: {
       const kinematic_terms k = kinematics_of(robot, x);
-      const Eigen::MatrixXd& v = quantity == dynamics_quantity::frame_poses ? k.poses : k.jacobians;
+      const Eigen::MatrixXd v = quantity == dynamics_quantity::frame_poses       ? k.poses
+                                : quantity == dynamics_quantity::frame_jacobians ? k.jacobians
+                                : quantity == dynamics_quantity::centre_of_mass  ? Eigen::MatrixXd(k.com)
+                                                                                 : k.com_jacobian;
       return residual_of(quantity, v, v, k.scale, k.moving_links, "reference");
+    }
+    case dynamics_quantity::centroidal_momentum_matrix: {
+      const kinematic_terms k = kinematics_of(robot, x);
+      return residual_of(quantity, k.momentum_matrix, k.momentum_matrix, k.scale_momentum, k.moving_links, "reference");
     }
   }
   throw domain_error("reference_only: unknown quantity");

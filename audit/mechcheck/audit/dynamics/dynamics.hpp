@@ -79,25 +79,47 @@ class library_failure : public error {
 ///                    acceleration in the world at zero accelerations (qddot = 0; udot = 0 on a
 ///                    floating base, the body twist's rate, whose linear part a library that
 ///                    takes the base's velocity in the world sees as R (w_b x v_b)).
+///   centre_of_mass   3 x 1: the robot's centre of mass in the world, over every link of the
+///                    description that carries a body (a fixed root's too, which never moves);
+///   com_jacobian     3 x v: its Jacobian, cdot = J_c (qdot; u);
+///   centroidal_momentum_matrix  6 x v: A_G, h_G = A_G (qdot; u), rows (P; L_G) the links'
+///                    total momentum and their angular momentum about the centre of mass
+///                    (robots/kinematics.hpp; Orin, Goswami and Lee stack them (L_G; P)).
 /// Their reference is the forward kinematics of robots/dynamics.hpp (link_states) in mpfr50,
 /// a Jacobian's column k the links' twists at velocity e_k, exactly, and Jdot qdot the links'
 /// accelerations of robots/recursive.hpp (link_accelerations) at qddot = 0; scale max(1, the
 /// longest path from the world's origin to a link's frame or centre of mass), which bounds
 /// every position and every column of a revolute joint (a rotation's entries and a slide's
 /// columns are within 1), times w^2 for Jdot qdot, w the largest of 1, a link's |omega| and
-/// a rate (its terms are omega x (omega x d), 2 omega x a qdot, alpha x d, w_b x v_b).
-enum class dynamics_quantity { mass_matrix, bias, inverse, forward, frame_poses, frame_jacobians, frame_bias_accelerations };
+/// a rate (its terms are omega x (omega x d), 2 omega x a qdot, alpha x d, w_b x v_b). The
+/// centre of mass and J_c take the same scale (the links' centres of mass are within the
+/// lever); A_G max(sum m_i r_i^2 + |I_i|, sum m_i lever) (robots::term_scales' inertia: the
+/// angular rows' terms m (x - c) x v and R I R^T omega; the linear rows' m v).
+enum class dynamics_quantity {
+  mass_matrix,
+  bias,
+  inverse,
+  forward,
+  frame_poses,
+  frame_jacobians,
+  frame_bias_accelerations,
+  centre_of_mass,
+  com_jacobian,
+  centroidal_momentum_matrix
+};
 const char* dynamics_quantity_name(dynamics_quantity q);
-/// Whether q is one of the kinematics (frame_poses, frame_jacobians, frame_bias_accelerations).
+/// Whether q is one of the kinematics (the frames' and the centre of mass's quantities).
 inline bool kinematic_quantity(dynamics_quantity q) {
   return q == dynamics_quantity::frame_poses || q == dynamics_quantity::frame_jacobians ||
-         q == dynamics_quantity::frame_bias_accelerations;
+         q == dynamics_quantity::frame_bias_accelerations || q == dynamics_quantity::centre_of_mass ||
+         q == dynamics_quantity::com_jacobian || q == dynamics_quantity::centroidal_momentum_matrix;
 }
 /// Every quantity, in the reports' order.
 inline constexpr dynamics_quantity all_dynamics_quantities[] = {
-    dynamics_quantity::mass_matrix,     dynamics_quantity::bias,        dynamics_quantity::inverse,
-    dynamics_quantity::forward,         dynamics_quantity::frame_poses, dynamics_quantity::frame_jacobians,
-    dynamics_quantity::frame_bias_accelerations};
+    dynamics_quantity::mass_matrix,     dynamics_quantity::bias,           dynamics_quantity::inverse,
+    dynamics_quantity::forward,         dynamics_quantity::frame_poses,    dynamics_quantity::frame_jacobians,
+    dynamics_quantity::frame_bias_accelerations, dynamics_quantity::centre_of_mass, dynamics_quantity::com_jacobian,
+    dynamics_quantity::centroidal_momentum_matrix};
 
 /// One library's model of one robot: each quantity it offers (nothing where it offers none).
 /// Coordinates in the description's order of its moving joints (robots::tree).
@@ -123,6 +145,13 @@ class dynamics_model {
   virtual std::optional<Eigen::MatrixXd> frame_jacobians(const Eigen::VectorXd& /*q*/) { return std::nullopt; }
   virtual std::optional<Eigen::VectorXd> frame_bias_accelerations(const Eigen::VectorXd& /*q*/,
                                                                   const Eigen::VectorXd& /*qdot*/) {
+    return std::nullopt;
+  }
+  /// The centre of mass's quantities (dynamics_quantity's centre_of_mass, com_jacobian,
+  /// centroidal_momentum_matrix); none by default.
+  virtual std::optional<Eigen::VectorXd> centre_of_mass(const Eigen::VectorXd& /*q*/) { return std::nullopt; }
+  virtual std::optional<Eigen::MatrixXd> com_jacobian(const Eigen::VectorXd& /*q*/) { return std::nullopt; }
+  virtual std::optional<Eigen::MatrixXd> centroidal_momentum_matrix(const Eigen::VectorXd& /*q*/) {
     return std::nullopt;
   }
 };
@@ -280,7 +309,11 @@ reference_terms reference_terms_at(const robots::robot& robot, const dynamics_st
 struct kinematic_reference {
   dynamic_matrix<mpfr50> poses, jacobians;
   dynamic_vector<mpfr50> bias_accelerations;  ///< with_bias only
-  double scale = 0, scale_bias = 0;           ///< poses and Jacobians; Jdot qdot
+  /// The centre of mass, J_c and A_G; empty for a robot that carries no mass.
+  dynamic_vector<mpfr50> com;
+  dynamic_matrix<mpfr50> com_jacobian, momentum_matrix;
+  double scale = 0, scale_bias = 0;  ///< poses, Jacobians, the centre of mass and J_c; Jdot qdot
+  double scale_momentum = 0;         ///< A_G
   int moving_links = 0;
 };
 kinematic_reference kinematic_reference_at(const robots::robot& robot, const dynamics_state& state,

@@ -127,6 +127,19 @@ concept offers_frame_bias_accelerations = requires(M& m, const dynamic_vector<T>
   { m.frame_bias_accelerations(x, x) } -> std::convertible_to<dynamic_vector<T>>;
 };
 
+template <class M, class T>
+concept offers_centre_of_mass = requires(M& m, const dynamic_vector<T>& x) {
+  { m.centre_of_mass(x) } -> std::convertible_to<dynamic_vector<T>>;
+};
+template <class M, class T>
+concept offers_com_jacobian = requires(M& m, const dynamic_vector<T>& x) {
+  { m.com_jacobian(x) } -> std::convertible_to<dynamic_matrix<T>>;
+};
+template <class M, class T>
+concept offers_centroidal_momentum_matrix = requires(M& m, const dynamic_vector<T>& x) {
+  { m.centroidal_momentum_matrix(x) } -> std::convertible_to<dynamic_matrix<T>>;
+};
+
 }  // namespace detail
 
 /// A library of one's own templated on the scalar: Model<T>(const robots::robot&) builds its
@@ -141,6 +154,9 @@ concept offers_frame_bias_accelerations = requires(M& m, const dynamic_vector<T>
 ///   dynamic_matrix<T> frame_poses(q);               12 x L
 ///   dynamic_matrix<T> frame_jacobians(q);           6 L x v
 ///   dynamic_vector<T> frame_bias_accelerations(q, qdot);   6 L: Jdot qdot
+///   dynamic_vector<T> centre_of_mass(q);            3
+///   dynamic_matrix<T> com_jacobian(q);              3 x v
+///   dynamic_matrix<T> centroidal_momentum_matrix(q);  6 x v: A_G, rows (P; L_G)
 /// check<T> holds it in tier T to the exact Lagrangian and forward kinematics at one robot
 /// and state.
 template <template <class> class Model>
@@ -187,8 +203,10 @@ struct templated_dynamics {
           dynamics_quantity::forward, dynamic_matrix<T>(model->forward(q, qdot, detail::in_tier<T>(x.tau))),
           dynamic_matrix<mpfr50>(e.qddot), e.scale_forward, n, who));
     constexpr bool poses = detail::offers_frame_poses<Model<T>, T>, jacobians = detail::offers_frame_jacobians<Model<T>, T>,
-                   accelerations = detail::offers_frame_bias_accelerations<Model<T>, T>;
-    if constexpr (poses || jacobians || accelerations) {
+                   accelerations = detail::offers_frame_bias_accelerations<Model<T>, T>,
+                   com = detail::offers_centre_of_mass<Model<T>, T>, com_jacobian = detail::offers_com_jacobian<Model<T>, T>,
+                   momentum_matrix = detail::offers_centroidal_momentum_matrix<Model<T>, T>;
+    if constexpr (poses || jacobians || accelerations || com || com_jacobian || momentum_matrix) {
       const kinematic_reference k = kinematic_reference_at(robot, x, accelerations);
       if constexpr (poses)
         out.residuals.push_back(detail::tier_residual<T>(dynamics_quantity::frame_poses,
@@ -202,6 +220,22 @@ struct templated_dynamics {
         out.residuals.push_back(detail::tier_residual<T>(
             dynamics_quantity::frame_bias_accelerations, dynamic_matrix<T>(model->frame_bias_accelerations(q, qdot)),
             dynamic_matrix<mpfr50>(k.bias_accelerations), k.scale_bias, k.moving_links, who));
+      // A robot without mass has no centre of mass (k.com empty): nothing to hold Model's to.
+      if constexpr (com)
+        if (k.com.size() == 3)
+          out.residuals.push_back(detail::tier_residual<T>(dynamics_quantity::centre_of_mass,
+                                                           dynamic_matrix<T>(model->centre_of_mass(q)),
+                                                           dynamic_matrix<mpfr50>(k.com), k.scale, k.moving_links, who));
+      if constexpr (com_jacobian)
+        if (k.com.size() == 3)
+          out.residuals.push_back(detail::tier_residual<T>(dynamics_quantity::com_jacobian,
+                                                           dynamic_matrix<T>(model->com_jacobian(q)), k.com_jacobian,
+                                                           k.scale, k.moving_links, who));
+      if constexpr (momentum_matrix)
+        if (k.com.size() == 3)
+          out.residuals.push_back(detail::tier_residual<T>(dynamics_quantity::centroidal_momentum_matrix,
+                                                           dynamic_matrix<T>(model->centroidal_momentum_matrix(q)),
+                                                           k.momentum_matrix, k.scale_momentum, k.moving_links, who));
     }
     return out;
   }

@@ -159,6 +159,13 @@ class robot_dynamics {
   /// Every body's JFDot u at its origin (calcBiasForFrameJacobian): 6 numbers a body,
   /// (angular; linear) in the ground.
   void frame_biases(const double* q, const double* u, double* out) const;
+  /// The system's mass centre in the ground at q (calcSystemMassCenterLocationInGround).
+  void centre_of_mass(const double* q, double* out) const;
+  /// At q and u = e_k for each mobility k (this class's order), column k of a 9 x size
+  /// row-major matrix: the mass centre's velocity (calcSystemMassCenterVelocityInGround), the
+  /// linear momentum and the angular momentum about the mass centre (calcSystemCentralMomentum's
+  /// [1] and [0]), in the ground.
+  void central_momenta(const double* q, double* out) const;
 
  private:
   struct impl;

@@ -187,4 +187,27 @@ void robot_dynamics::frame_biases(const double* q, const double* u, double* out)
   for (std::size_t r = 0; r < 6 * p_->all.size(); ++r) out[r] = bias[int(r)];
 }
 
+void robot_dynamics::centre_of_mass(const double* q, double* out) const {
+  p_->set(q, nullptr, Stage::Position);
+  const Vec3 c = p_->matter.calcSystemMassCenterLocationInGround(p_->state);
+  for (int i = 0; i < 3; ++i) out[i] = c[i];
+}
+
+void robot_dynamics::central_momenta(const double* q, double* out) const {
+  const std::size_t nu = p_->u.size();
+  std::vector<double> e(nu, 0.0);
+  for (std::size_t k = 0; k < nu; ++k) {
+    e[k] = 1;
+    p_->set(q, e.data(), Stage::Velocity);
+    e[k] = 0;
+    const Vec3 v = p_->matter.calcSystemMassCenterVelocityInGround(p_->state);
+    const SpatialVec h = p_->matter.calcSystemCentralMomentum(p_->state);
+    for (int i = 0; i < 3; ++i) {
+      out[std::size_t(i) * nu + k] = v[i];
+      out[std::size_t(3 + i) * nu + k] = h[1][i];
+      out[std::size_t(6 + i) * nu + k] = h[0][i];
+    }
+  }
+}
+
 }  // namespace mechcheck::audit::simbody_bridge
