@@ -130,12 +130,13 @@ TEST(dynamics_audit, every_library_gives_the_two_link_arms_closed_form) {
     ASSERT_TRUE(c.refused.empty()) << library.name << ": " << c.refused;
     // Every library offers forward dynamics; Bullet's core nothing else.
     ASSERT_FALSE(c.residuals.empty()) << library.name;
-    // Kinematics: frames and Jacobians in KDL, MuJoCo, DART and Simbody, Jdot qdot in all but
+    // Kinematics: frames and Jacobians (at the frames' origins and the links' centres of mass)
+    // in KDL, MuJoCo, DART and Simbody, Jdot qdot in all but
     // MuJoCo; the centre of mass and J_c in MuJoCo, DART and Simbody, A_G in MuJoCo and Simbody.
-    const std::size_t kinematics = library.name == "kdl"       ? 3
-                                   : library.name == "dart"    ? 5
-                                   : library.name == "simbody" ? 6
-                                   : library.name == "mujoco"  ? 5
+    const std::size_t kinematics = library.name == "kdl"       ? 4
+                                   : library.name == "dart"    ? 6
+                                   : library.name == "simbody" ? 7
+                                   : library.name == "mujoco"  ? 6
                                                                : 0;
     EXPECT_EQ(c.residuals.size(), library.name == "bullet" ? 1u : 4u + kinematics) << library.name;
     EXPECT_EQ(c.residuals[c.residuals.size() - kinematics - 1].quantity, audit::dynamics_quantity::forward)
@@ -186,6 +187,7 @@ Eigen::VectorXd arm_bias_accelerations(double l1, const Eigen::Vector2d& q, cons
 /// momentum about c only along y, (a x b)_y = a_z b_x - a_x b_z).
 struct arm_mass_terms {
   Eigen::MatrixXd com, com_jacobian, momentum_matrix;
+  Eigen::MatrixXd link_com_jacobians;  ///< 18 x 2: each link's at its centre of mass, (dx/dq; e_y)
 };
 arm_mass_terms arm_mass(double m1, double m2, double l1, double c1, double c2, double i1, double i2,
                         const Eigen::Vector2d& q) {
@@ -199,6 +201,11 @@ arm_mass_terms arm_mass(double m1, double m2, double l1, double c1, double c2, d
   const Eigen::Vector3d c = (m1 * x1 + m2 * x2) / m;
   out.com = c;
   out.com_jacobian = (m1 * d1 + m2 * d2) / m;
+  out.link_com_jacobians = Eigen::MatrixXd::Zero(18, 2);
+  out.link_com_jacobians.block<3, 2>(6, 0) = d1;
+  out.link_com_jacobians(10, 0) = 1;
+  out.link_com_jacobians.block<3, 2>(12, 0) = d2;
+  out.link_com_jacobians.block<1, 2>(16, 0).setOnes();
   out.momentum_matrix = Eigen::MatrixXd::Zero(6, 2);
   out.momentum_matrix.topRows<3>() = m1 * d1 + m2 * d2;
   const Eigen::Vector3d r1 = x1 - c, r2 = x2 - c;
@@ -226,6 +233,7 @@ TEST(dynamics_audit, every_library_with_kinematics_gives_the_arms_frames_and_jac
     return q == dq::frame_poses ? poses
            : q == dq::frame_jacobians ? jacobians
            : q == dq::frame_bias_accelerations ? accelerations
+           : q == dq::link_com_jacobians ? mass.link_com_jacobians
            : q == dq::centre_of_mass ? mass.com
            : q == dq::com_jacobian   ? mass.com_jacobian
                                      : mass.momentum_matrix;
@@ -237,7 +245,7 @@ TEST(dynamics_audit, every_library_with_kinematics_gives_the_arms_frames_and_jac
   // column: 4 eps); every library that offers them within its budget, 16 n eps of the scale,
   // of it.
   const double lever = l1 + 0.375, momentum_scale = std::max(2 * 0.5 * 0.5 + 0.5 + 1.5 * lever * lever + 0.125, 3.5 * lever);
-  const auto kinematic = {dq::frame_poses,    dq::frame_jacobians, dq::frame_bias_accelerations,
+  const auto kinematic = {dq::frame_poses,    dq::frame_jacobians, dq::frame_bias_accelerations, dq::link_com_jacobians,
                           dq::centre_of_mass, dq::com_jacobian,    dq::centroidal_momentum_matrix};
   for (const auto q : kinematic) {
     const audit::dynamics_residual ref = audit::reference_only(q, r, x);
@@ -261,7 +269,7 @@ TEST(dynamics_audit, every_library_with_kinematics_gives_the_arms_frames_and_jac
           << library.name << ": " << audit::dynamics_quantity_name(res.quantity) << "\n" << res.library;
     }
 #ifdef MECHCHECK_HAVE_MUJOCO
-  EXPECT_GE(offered, 5) << "MuJoCo gives all but Jdot qdot";
+  EXPECT_GE(offered, 6) << "MuJoCo gives all but Jdot qdot";
 #else
   (void)offered;
 #endif
@@ -320,6 +328,10 @@ TEST(dynamics_audit, a_free_rigid_body_gives_newton_and_euler_in_every_library_w
       const Eigen::MatrixXd com = at.xyz + rotation * c;
       Eigen::MatrixXd com_jacobian(3, 6), momentum_matrix = Eigen::MatrixXd::Zero(6, 6);
       com_jacobian << rotation, -rotation * lever;
+      // Its Jacobian at the centre of mass: (J_c; 0, R).
+      Eigen::MatrixXd at_com = Eigen::MatrixXd::Zero(6, 6);
+      at_com.topRows<3>() = com_jacobian;
+      at_com.bottomRightCorner<3, 3>() = rotation;
       momentum_matrix.topRows<3>() = body.mass * com_jacobian;
       momentum_matrix.bottomRightCorner<3, 3>() = rotation * ro * body.inertia * ro.transpose();
       const Eigen::MatrixXd closed = res.quantity == audit::dynamics_quantity::mass_matrix ? want.m
@@ -329,6 +341,7 @@ TEST(dynamics_audit, a_free_rigid_body_gives_newton_and_euler_in_every_library_w
                                      : res.quantity == audit::dynamics_quantity::frame_jacobians ? jacobian
                                      : res.quantity == audit::dynamics_quantity::frame_bias_accelerations
                                          ? bias_acceleration
+                                     : res.quantity == audit::dynamics_quantity::link_com_jacobians ? at_com
                                      : res.quantity == audit::dynamics_quantity::centre_of_mass ? com
                                      : res.quantity == audit::dynamics_quantity::com_jacobian   ? com_jacobian
                                      : res.quantity == audit::dynamics_quantity::centroidal_momentum_matrix

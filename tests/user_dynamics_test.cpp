@@ -196,6 +196,16 @@ struct kinematic_arm : arm<T, variant::right> {
     t.c = (t.x1 * m1 + t.x2 * m2) / (m1 + m2);
     return t;
   }
+  /// Each link's Jacobian at its centre of mass: (dx/dq; e_z), the base's zero.
+  dynamic_matrix<T> link_com_jacobians(const dynamic_vector<T>& q) const {
+    const mass_terms t = masses(q);
+    dynamic_matrix<S> out = dynamic_matrix<S>::Zero(18, 2);
+    out.block(6, 0, 3, 2) = t.d1;
+    out(11, 0) = S(1);
+    out.block(12, 0, 3, 2) = t.d2;
+    out(17, 0) = out(17, 1) = S(1);
+    return out.template cast<T>();
+  }
   dynamic_vector<T> centre_of_mass(const dynamic_vector<T>& q) const {
     return masses(q).c.template cast<T>();
   }
@@ -226,7 +236,8 @@ TEST(user_dynamics, a_templated_librarys_kinematics_are_judged_in_every_tier) {
   // and mpfr50.
   const rb::robot r = planar_arm();
   const auto kinematic = {audit::dynamics_quantity::frame_poses,    audit::dynamics_quantity::frame_jacobians,
-                          audit::dynamics_quantity::frame_bias_accelerations, audit::dynamics_quantity::centre_of_mass,
+                          audit::dynamics_quantity::frame_bias_accelerations, audit::dynamics_quantity::link_com_jacobians,
+                          audit::dynamics_quantity::centre_of_mass,
                           audit::dynamics_quantity::com_jacobian,   audit::dynamics_quantity::centroidal_momentum_matrix};
   for (const auto& c : audit::templated_dynamics<arm_with_kinematics>{"arm", "closed form"}.run_every_tier(states(10), &r)) {
     EXPECT_TRUE(all_within(c)) << c.library << ": " << c.disagreement << c.note;

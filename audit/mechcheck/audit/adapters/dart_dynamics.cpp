@@ -185,11 +185,17 @@ class dart_model final : public dynamics_model {
   /// Skeleton::getWorldJacobian of each BodyNode (its origin, in the world; DART's rows
   /// (omega; v) stacked here (v; omega)), columns the Skeleton's degrees of freedom in the
   /// robot's order (a floating base's body twist needs no more: order_).
-  std::optional<Eigen::MatrixXd> frame_jacobians(const Eigen::VectorXd& q) override {
+  std::optional<Eigen::MatrixXd> frame_jacobians(const Eigen::VectorXd& q) override { return jacobians(q, false); }
+  /// Skeleton::getWorldJacobian of each BodyNode at the offset of its centre of mass
+  /// (BodyNode::getLocalCOM, in its frame), stacked as frame_jacobians'.
+  std::optional<Eigen::MatrixXd> link_com_jacobians(const Eigen::VectorXd& q) override { return jacobians(q, true); }
+  /// The two above: at each BodyNode's origin, or at_com at its centre of mass.
+  Eigen::MatrixXd jacobians(const Eigen::VectorXd& q, bool at_com) {
     set_positions(q);
     Eigen::MatrixXd out(6 * static_cast<Eigen::Index>(body_.size()), n_);
     for (std::size_t l = 0; l < body_.size(); ++l) {
-      const dart::math::Jacobian j = skeleton_->getWorldJacobian(body_[l]);
+      const dart::math::Jacobian j = at_com ? skeleton_->getWorldJacobian(body_[l], body_[l]->getLocalCOM())
+                                            : skeleton_->getWorldJacobian(body_[l]);
       const auto row = 6 * static_cast<Eigen::Index>(l);
       for (int i = 0; i < n_; ++i) {
         out.block<3, 1>(row, order_.order[std::size_t(i)]) = j.block<3, 1>(3, i);
@@ -292,7 +298,7 @@ dynamics_library dynamics(double time_step) {
              "FreeJoint (positions: convertToPositions of the root's transform; velocities: the root's spatial "
              "velocity in its own frame, angular first, (w_b; v_b), and their rates; forces (n_b; f_b)); each "
              "link's frame by BodyNode::getWorldTransform, its Jacobian by Skeleton::getWorldJacobian (the "
-             "BodyNode's origin, rows (omega; v) in the world), Jdot qdot by Skeleton::getJacobianClassicDeriv "
+             "BodyNode's origin, rows (omega; v) in the world; at its centre of mass with the offset getLocalCOM), Jdot qdot by Skeleton::getJacobianClassicDeriv "
              "times the velocities; the centre of mass by Skeleton::getCOM and J_c by getCOMLinearJacobian (less "
              "a massless welded root's default mass 1, which DART counts at the root's fixed centre of mass: "
              "(M c - m_root c_root) / (M - m_root) and J_c M / (M - m_root)); no centroidal momentum matrix";

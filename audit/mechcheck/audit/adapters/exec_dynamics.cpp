@@ -31,6 +31,7 @@ const char* reply_field(dynamics_quantity q) {
     case dynamics_quantity::frame_poses:
     case dynamics_quantity::frame_jacobians:
     case dynamics_quantity::frame_bias_accelerations:
+    case dynamics_quantity::link_com_jacobians:
     case dynamics_quantity::centre_of_mass:
     case dynamics_quantity::com_jacobian:
     case dynamics_quantity::centroidal_momentum_matrix: break;  // not carried (exec_wire.cpp)

@@ -167,8 +167,14 @@ class kdl_model final : public dynamics_model {
   /// TreeJntToJacSolver::JntToJac of each link's segment: "expressed in the baseframe of the
   /// tree", "the reference point is in the end-segment" (treejnttojacsolver.hpp), rows (v;
   /// omega) as KDL's Twist; the root's rows zero.
-  std::optional<Eigen::MatrixXd> frame_jacobians(const Eigen::VectorXd& q) override {
+  std::optional<Eigen::MatrixXd> frame_jacobians(const Eigen::VectorXd& q) override { return jacobians(q, false); }
+  /// The same moved to each link's centre of mass by Jacobian::changeRefPoint ("by a vector
+  /// base_AB expressed in the base frame"): the centre of mass's offset in the link's frame
+  /// turned into the base's by TreeFkSolverPos_recursive's rotation of the segment.
+  std::optional<Eigen::MatrixXd> link_com_jacobians(const Eigen::VectorXd& q) override { return jacobians(q, true); }
+  Eigen::MatrixXd jacobians(const Eigen::VectorXd& q, bool at_com) {
     KDL::TreeJntToJacSolver solver(tree_);
+    KDL::TreeFkSolverPos_recursive fk(tree_);
     const KDL::JntArray joints = in_tree(q);
     Eigen::MatrixXd out = Eigen::MatrixXd::Zero(6 * static_cast<Eigen::Index>(robot_.links.size()), n_);
     KDL::Jacobian jac(static_cast<unsigned>(n_));
@@ -176,6 +182,12 @@ class kdl_model final : public dynamics_model {
       if (static_cast<int>(l) == root_) continue;
       jac.data.setZero();
       check(solver.JntToJac(joints, jac, robot_.links[l].name), "TreeJntToJacSolver::JntToJac");
+      if (const auto& body = robot_.links[l].body; at_com && body) {
+        KDL::Frame f;
+        check(fk.JntToCart(joints, f, robot_.links[l].name), "TreeFkSolverPos_recursive::JntToCart");
+        const Eigen::Vector3d& c = body->origin.xyz;
+        jac.changeRefPoint(f.M * KDL::Vector(c(0), c(1), c(2)));
+      }
       for (int i = 0; i < n_; ++i)
         out.block<6, 1>(6 * static_cast<Eigen::Index>(l), tree_order_.order[std::size_t(i)]) = jac.data.col(i);
     }
@@ -244,7 +256,7 @@ dynamics_library kdl_dynamics() {
              "to H's diagonal, the RNE solvers inertia q_dotdot); no damping: KDL 1.5.1 keeps a Joint's damping "
              "and none of its solvers reads it (getDamping is called nowhere in its source), so a robot with "
              "damping is refused; each link's frame by TreeFkSolverPos_recursive::JntToCart and its Jacobian by "
-             "TreeJntToJacSolver::JntToJac (the segment's tip, in the base frame), on a chain and a tree alike; "
+             "TreeJntToJacSolver::JntToJac (the segment's tip, in the base frame; at a link's centre of mass by Jacobian::changeRefPoint), on a chain and a tree alike; "
              "Jdot qdot by ChainJntToJacDotSolver::JntToJacDot (hybrid representation) on the chain from the root "
              "to each link (Tree::getChain)";
   l.sets_armature = true;

@@ -261,14 +261,21 @@ class mujoco_model final : public dynamics_model {
   /// mj_jacBody (jacp over jacr: the body frame's origin, xpos, and the body's rotation, both
   /// in the world) after mj_kinematics and mj_comPos, which it needs (cdof, subtree_com); its
   /// columns MuJoCo's velocities, each row through the base's convention (J = J_mj T).
-  std::optional<Eigen::MatrixXd> frame_jacobians(const Eigen::VectorXd& q) override {
+  std::optional<Eigen::MatrixXd> frame_jacobians(const Eigen::VectorXd& q) override { return jacobians(q, mj_jacBody); }
+  /// mj_jacBodyCom: at each body's centre of mass (xipos), as frame_jacobians.
+  std::optional<Eigen::MatrixXd> link_com_jacobians(const Eigen::VectorXd& q) override {
+    return jacobians(q, mj_jacBodyCom);
+  }
+  /// The two above, by MuJoCo's function `jacobian` of a body.
+  std::optional<Eigen::MatrixXd> jacobians(const Eigen::VectorXd& q,
+                                           void (*jacobian)(const mjModel*, const mjData*, mjtNum*, mjtNum*, int)) {
     if (body_.empty()) return std::nullopt;
     place(q);
     const std::size_t nv_mj = std::size_t(m_->nv);
     std::vector<mjtNum> jacp(3 * nv_mj), jacr(3 * nv_mj);
     Eigen::MatrixXd out(6 * static_cast<Eigen::Index>(body_.size()), nv());
     for (std::size_t l = 0; l < body_.size(); ++l) {
-      mj_jacBody(m_.get(), d_.get(), jacp.data(), jacr.data(), body_[l]);
+      jacobian(m_.get(), d_.get(), jacp.data(), jacr.data(), body_[l]);
       for (int row = 0; row < 6; ++row) {
         const mjtNum* j = (row < 3 ? jacp.data() : jacr.data()) + std::size_t(row % 3) * nv_mj;
         Eigen::VectorXd in_mj(nv());
@@ -408,7 +415,7 @@ dynamics_library dynamics() {
                  "mj_fullM of qM, qfrc_bias and qacc after mj_forward, qfrc_inverse after mj_inverse, on a model "
                  "built as MJCF (each link a body at its joint's origin, its inertia turned into the body frame as "
                  "fullinertia, hinge and slide joints, no limits or geoms); each link's frame as xpos and xmat after "
-                 "mj_kinematics, its Jacobian by mj_jacBody after mj_kinematics and mj_comPos; the centre of mass as the "
+                 "mj_kinematics, its Jacobian by mj_jacBody after mj_kinematics and mj_comPos, and at its centre of mass by mj_jacBodyCom; the centre of mass as the "
                  "world body's subtree_com, J_c by mj_jacSubtreeCom of the world body, A_G column by column as its "
                  "subtree mass times subtree_linvel and subtree_angmom after mj_comVel and mj_subtreeVel at qvel "
                  "= e_k (not offered where a fixed root carries a body: the root is the world body, whose mass "

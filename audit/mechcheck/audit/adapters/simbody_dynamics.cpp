@@ -124,8 +124,11 @@ class model final : public dynamics_model {
   /// calcFrameJacobian at each body's origin: rows (angular; linear) in the ground stacked
   /// (v; omega); a floating base's columns read through the Free mobilizer's u as its forces
   /// are (a row is a covector: T^T row).
-  std::optional<Eigen::MatrixXd> frame_jacobians(const Eigen::VectorXd& q) override {
-    const Eigen::MatrixXd j = library_jacobians(q);
+  std::optional<Eigen::MatrixXd> frame_jacobians(const Eigen::VectorXd& q) override { return jacobians(q, false); }
+  /// calcFrameJacobian at each body's mass centre (a station on it), as frame_jacobians.
+  std::optional<Eigen::MatrixXd> link_com_jacobians(const Eigen::VectorXd& q) override { return jacobians(q, true); }
+  Eigen::MatrixXd jacobians(const Eigen::VectorXd& q, bool at_com) const {
+    const Eigen::MatrixXd j = library_jacobians(q, at_com);
     const base_map f = frame(q, Eigen::VectorXd::Zero(j.cols()));
     Eigen::MatrixXd jac(j.rows(), j.cols());
     for (Eigen::Index r = 0; r < j.rows(); ++r) jac.row(r) = f.from_library(Eigen::VectorXd(j.row(r).transpose())).transpose();
@@ -232,12 +235,12 @@ class model final : public dynamics_model {
   }
   /// calcFrameJacobian's rows as ordered's, its columns the robot's mobilities (a floating
   /// base's six first, in Simbody's layout).
-  Eigen::MatrixXd library_jacobians(const Eigen::VectorXd& q) const {
+  Eigen::MatrixXd library_jacobians(const Eigen::VectorXd& q, bool at_com = false) const {
     const Eigen::VectorXd qs = positions(q);
     const int nu = n_ + base();
     const auto rows = 6 * static_cast<Eigen::Index>(link_of_.size());
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> j(rows, nu);
-    guarded("calcFrameJacobian", [&] { d_->frame_jacobians(qs.data(), j.data()); });
+    guarded("calcFrameJacobian", [&] { d_->frame_jacobians(qs.data(), j.data(), at_com); });
     Eigen::MatrixXd cols(rows, nu);
     for (Eigen::Index r = 0; r < rows; ++r) cols.row(r) = out(Eigen::VectorXd(j.row(r).transpose())).transpose();
     return ordered(cols);
@@ -269,8 +272,8 @@ dynamics_library dynamics() {
              "setQToFitTransform of the base's pose; its u the angular then the linear velocity, both in the "
              "ground's frame, R w_b and R v_b, their rates R wdot_b and R (vdot_b + w_b x v_b); forces and M "
              "through the same map); each link's frame by MobilizedBody::getBodyTransform, its Jacobian by "
-             "calcFrameJacobian at the body's origin (rows (angular; linear) in the ground; a floating base's "
-             "columns through the same map), Jdot qdot by calcBiasForFrameJacobian (at Simbody's udot = 0, plus "
+             "calcFrameJacobian at the body's origin and at its mass centre (rows (angular; linear) in the ground; a "
+             "floating base's columns through the same map), Jdot qdot by calcBiasForFrameJacobian (at Simbody's udot = 0, plus "
              "JF times the state's udot = 0 in Simbody's u on a floating base); the centre of mass by "
              "calcSystemMassCenterLocationInGround (every body's, the welded root's too), J_c and A_G column by "
              "column from calcSystemMassCenterVelocityInGround and calcSystemCentralMomentum at u = e_k (through "

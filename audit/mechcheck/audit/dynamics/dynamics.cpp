@@ -28,6 +28,7 @@ const char* dynamics_quantity_name(dynamics_quantity q) {
     case dynamics_quantity::frame_poses: return "frame poses";
     case dynamics_quantity::frame_jacobians: return "frame Jacobians";
     case dynamics_quantity::frame_bias_accelerations: return "frame Jdot qdot";
+    case dynamics_quantity::link_com_jacobians: return "link COM Jacobians";
     case dynamics_quantity::centre_of_mass: return "centre of mass";
     case dynamics_quantity::com_jacobian: return "COM Jacobian";
     case dynamics_quantity::centroidal_momentum_matrix: return "centroidal A_G";
@@ -237,6 +238,7 @@ kinematic_reference kinematic_reference_at(const robots::robot& robot, const dyn
   }
   // Column k: every link's twist at the velocity e_k (the twist is linear in the velocities).
   out.jacobians.resize(6 * links, n + base);
+  out.com_jacobians.resize(6 * links, n + base);
   for (int k = 0; k < n + base; ++k) {
     dynamic_vector<mpfr50> e = dynamic_vector<mpfr50>::Zero(n + base);
     e(k) = 1;
@@ -244,6 +246,9 @@ kinematic_reference kinematic_reference_at(const robots::robot& robot, const dyn
     for (Eigen::Index l = 0; l < links; ++l) {
       out.jacobians.block<3, 1>(6 * l, k) = moving[std::size_t(l)].velocity;
       out.jacobians.block<3, 1>(6 * l + 3, k) = moving[std::size_t(l)].omega;
+      // The point at the link's centre of mass (robot_model's com: zero without a body).
+      const dynamic_vector<mpfr50> twist = robots::detail::point_twist(moving[std::size_t(l)], m.com[std::size_t(l)]);
+      out.com_jacobians.block<6, 1>(6 * l, k) = twist;
     }
     if (!massive) continue;
     // h_G = (P; L_O - c x P), eq 83 with a = -c.
@@ -288,7 +293,7 @@ kinematic_reference kinematic_reference_at(const robots::robot& robot, const dyn
 namespace {
 /// The kinematic reference rounded once to double.
 struct kinematic_terms {
-  Eigen::MatrixXd poses, jacobians;
+  Eigen::MatrixXd poses, jacobians, com_jacobians;
   Eigen::VectorXd bias_accelerations;  ///< with_bias only
   Eigen::VectorXd com;
   Eigen::MatrixXd com_jacobian, momentum_matrix;
@@ -301,6 +306,7 @@ kinematic_terms kinematics_of(const robots::robot& robot, const dynamics_state& 
   kinematic_terms out;
   out.poses = narrowed(r.poses);
   out.jacobians = narrowed(r.jacobians);
+  out.com_jacobians = narrowed(r.com_jacobians);
   if (with_bias) out.bias_accelerations = narrowed(r.bias_accelerations);
   out.com = narrowed(r.com);
   out.com_jacobian = narrowed(r.com_jacobian);
@@ -362,10 +368,11 @@ dynamics_check check_dynamics(const dynamics_library& library, const robots::rob
     out.residuals.push_back(residual_of(dynamics_quantity::forward, *a, e.qddot, e.scale_forward, e.moving_links, who));
   const std::optional<Eigen::MatrixXd> poses = model->frame_poses(x.q), jacobians = model->frame_jacobians(x.q);
   const std::optional<Eigen::VectorXd> accelerations = model->frame_bias_accelerations(x.q, x.qdot);
+  const std::optional<Eigen::MatrixXd> com_jacobians = model->link_com_jacobians(x.q);
   const std::optional<Eigen::VectorXd> com = model->centre_of_mass(x.q);
   const std::optional<Eigen::MatrixXd> com_jacobian = model->com_jacobian(x.q),
                                        momentum_matrix = model->centroidal_momentum_matrix(x.q);
-  if (poses || jacobians || accelerations || com || com_jacobian || momentum_matrix) {
+  if (poses || jacobians || accelerations || com_jacobians || com || com_jacobian || momentum_matrix) {
     const kinematic_terms k = kinematics_of(robot, x, accelerations.has_value());
     if (poses)
       out.residuals.push_back(residual_of(dynamics_quantity::frame_poses, *poses, k.poses, k.scale, k.moving_links, who));
@@ -375,6 +382,9 @@ dynamics_check check_dynamics(const dynamics_library& library, const robots::rob
     if (accelerations)
       out.residuals.push_back(residual_of(dynamics_quantity::frame_bias_accelerations, *accelerations,
                                           k.bias_accelerations, k.scale_bias, k.moving_links, who));
+    if (com_jacobians)
+      out.residuals.push_back(residual_of(dynamics_quantity::link_com_jacobians, *com_jacobians, k.com_jacobians,
+                                          k.scale, k.moving_links, who));
     // A robot without mass has no centre of mass: nothing to hold a library's to.
     const bool massive = k.com.size() == 3;
     if (com && massive)
@@ -471,11 +481,13 @@ dynamics_residual reference_only(dynamics_quantity quantity, const robots::robot
     }
     case dynamics_quantity::frame_poses:
     case dynamics_quantity::frame_jacobians:
+    case dynamics_quantity::link_com_jacobians:
     case dynamics_quantity::centre_of_mass:
     case dynamics_quantity::com_jacobian: {
       const kinematic_terms k = kinematics_of(robot, x);
-      const Eigen::MatrixXd v = quantity == dynamics_quantity::frame_poses       ? k.poses
-                                : quantity == dynamics_quantity::frame_jacobians ? k.jacobians
+      const Eigen::MatrixXd v = quantity == dynamics_quantity::frame_poses          ? k.poses
+                                : quantity == dynamics_quantity::frame_jacobians    ? k.jacobians
+                                : quantity == dynamics_quantity::link_com_jacobians ? k.com_jacobians
                                 : quantity == dynamics_quantity::centre_of_mass  ? Eigen::MatrixXd(k.com)
                                                                                  : k.com_jacobian;
       return residual_of(quantity, v, v, k.scale, k.moving_links, "reference");

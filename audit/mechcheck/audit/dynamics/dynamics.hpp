@@ -79,6 +79,8 @@ class library_failure : public error {
 ///                    acceleration in the world at zero accelerations (qddot = 0; udot = 0 on a
 ///                    floating base, the body twist's rate, whose linear part a library that
 ///                    takes the base's velocity in the world sees as R (w_b x v_b)).
+///   link_com_jacobians  6 L x v: as frame_jacobians, of the point of each link at its centre
+///                    of mass (its frame's origin for a link without a body): (v_c; omega);
 ///   centre_of_mass   3 x 1: the robot's centre of mass in the world, over every link of the
 ///                    description that carries a body (a fixed root's too, which never moves);
 ///   com_jacobian     3 x v: its Jacobian, cdot = J_c (qdot; u);
@@ -103,6 +105,7 @@ enum class dynamics_quantity {
   frame_poses,
   frame_jacobians,
   frame_bias_accelerations,
+  link_com_jacobians,
   centre_of_mass,
   com_jacobian,
   centroidal_momentum_matrix
@@ -111,14 +114,16 @@ const char* dynamics_quantity_name(dynamics_quantity q);
 /// Whether q is one of the kinematics (the frames' and the centre of mass's quantities).
 inline bool kinematic_quantity(dynamics_quantity q) {
   return q == dynamics_quantity::frame_poses || q == dynamics_quantity::frame_jacobians ||
-         q == dynamics_quantity::frame_bias_accelerations || q == dynamics_quantity::centre_of_mass ||
+         q == dynamics_quantity::frame_bias_accelerations || q == dynamics_quantity::link_com_jacobians ||
+         q == dynamics_quantity::centre_of_mass ||
          q == dynamics_quantity::com_jacobian || q == dynamics_quantity::centroidal_momentum_matrix;
 }
 /// Every quantity, in the reports' order.
 inline constexpr dynamics_quantity all_dynamics_quantities[] = {
     dynamics_quantity::mass_matrix,     dynamics_quantity::bias,           dynamics_quantity::inverse,
     dynamics_quantity::forward,         dynamics_quantity::frame_poses,    dynamics_quantity::frame_jacobians,
-    dynamics_quantity::frame_bias_accelerations, dynamics_quantity::centre_of_mass, dynamics_quantity::com_jacobian,
+    dynamics_quantity::frame_bias_accelerations, dynamics_quantity::link_com_jacobians,
+    dynamics_quantity::centre_of_mass,  dynamics_quantity::com_jacobian,
     dynamics_quantity::centroidal_momentum_matrix};
 
 /// One library's model of one robot: each quantity it offers (nothing where it offers none).
@@ -147,6 +152,7 @@ class dynamics_model {
                                                                   const Eigen::VectorXd& /*qdot*/) {
     return std::nullopt;
   }
+  virtual std::optional<Eigen::MatrixXd> link_com_jacobians(const Eigen::VectorXd& /*q*/) { return std::nullopt; }
   /// The centre of mass's quantities (dynamics_quantity's centre_of_mass, com_jacobian,
   /// centroidal_momentum_matrix); none by default.
   virtual std::optional<Eigen::VectorXd> centre_of_mass(const Eigen::VectorXd& /*q*/) { return std::nullopt; }
@@ -307,7 +313,7 @@ reference_terms reference_terms_at(const robots::robot& robot, const dynamics_st
 /// frames come back through roll, pitch and yaw, which lose digits near a pitch of +-pi/2:
 /// 179 eps on a random robot).
 struct kinematic_reference {
-  dynamic_matrix<mpfr50> poses, jacobians;
+  dynamic_matrix<mpfr50> poses, jacobians, com_jacobians;  ///< com_jacobians: link_com_jacobians'
   dynamic_vector<mpfr50> bias_accelerations;  ///< with_bias only
   /// The centre of mass, J_c and A_G; empty for a robot that carries no mass.
   dynamic_vector<mpfr50> com;

@@ -128,6 +128,10 @@ concept offers_frame_bias_accelerations = requires(M& m, const dynamic_vector<T>
 };
 
 template <class M, class T>
+concept offers_link_com_jacobians = requires(M& m, const dynamic_vector<T>& x) {
+  { m.link_com_jacobians(x) } -> std::convertible_to<dynamic_matrix<T>>;
+};
+template <class M, class T>
 concept offers_centre_of_mass = requires(M& m, const dynamic_vector<T>& x) {
   { m.centre_of_mass(x) } -> std::convertible_to<dynamic_vector<T>>;
 };
@@ -154,6 +158,7 @@ concept offers_centroidal_momentum_matrix = requires(M& m, const dynamic_vector<
 ///   dynamic_matrix<T> frame_poses(q);               12 x L
 ///   dynamic_matrix<T> frame_jacobians(q);           6 L x v
 ///   dynamic_vector<T> frame_bias_accelerations(q, qdot);   6 L: Jdot qdot
+///   dynamic_matrix<T> link_com_jacobians(q);        6 L x v: at each link's centre of mass
 ///   dynamic_vector<T> centre_of_mass(q);            3
 ///   dynamic_matrix<T> com_jacobian(q);              3 x v
 ///   dynamic_matrix<T> centroidal_momentum_matrix(q);  6 x v: A_G, rows (P; L_G)
@@ -204,9 +209,10 @@ struct templated_dynamics {
           dynamic_matrix<mpfr50>(e.qddot), e.scale_forward, n, who));
     constexpr bool poses = detail::offers_frame_poses<Model<T>, T>, jacobians = detail::offers_frame_jacobians<Model<T>, T>,
                    accelerations = detail::offers_frame_bias_accelerations<Model<T>, T>,
+                   com_jacobians = detail::offers_link_com_jacobians<Model<T>, T>,
                    com = detail::offers_centre_of_mass<Model<T>, T>, com_jacobian = detail::offers_com_jacobian<Model<T>, T>,
                    momentum_matrix = detail::offers_centroidal_momentum_matrix<Model<T>, T>;
-    if constexpr (poses || jacobians || accelerations || com || com_jacobian || momentum_matrix) {
+    if constexpr (poses || jacobians || accelerations || com_jacobians || com || com_jacobian || momentum_matrix) {
       const kinematic_reference k = kinematic_reference_at(robot, x, accelerations);
       if constexpr (poses)
         out.residuals.push_back(detail::tier_residual<T>(dynamics_quantity::frame_poses,
@@ -220,6 +226,10 @@ struct templated_dynamics {
         out.residuals.push_back(detail::tier_residual<T>(
             dynamics_quantity::frame_bias_accelerations, dynamic_matrix<T>(model->frame_bias_accelerations(q, qdot)),
             dynamic_matrix<mpfr50>(k.bias_accelerations), k.scale_bias, k.moving_links, who));
+      if constexpr (com_jacobians)
+        out.residuals.push_back(detail::tier_residual<T>(dynamics_quantity::link_com_jacobians,
+                                                         dynamic_matrix<T>(model->link_com_jacobians(q)),
+                                                         k.com_jacobians, k.scale, k.moving_links, who));
       // A robot without mass has no centre of mass (k.com empty): nothing to hold Model's to.
       if constexpr (com)
         if (k.com.size() == 3)

@@ -151,6 +151,7 @@ const char* quantity_op(dynamics_quantity q) {
     case dynamics_quantity::frame_poses: return "frame_poses";
     case dynamics_quantity::frame_jacobians: return "frame_jacobians";
     case dynamics_quantity::frame_bias_accelerations: return "frame_bias_accelerations";
+    case dynamics_quantity::link_com_jacobians: return "link_com_jacobians";
     case dynamics_quantity::centre_of_mass: return "centre_of_mass";
     case dynamics_quantity::com_jacobian: return "com_jacobian";
     case dynamics_quantity::centroidal_momentum_matrix: return "centroidal_momentum_matrix";

@@ -154,8 +154,9 @@ class robot_dynamics {
   /// numbers a body, robot_setup's order: the position, then the rotation's columns.
   void frames(const double* q, double* out) const;
   /// Every body's frame Jacobian at its origin (calcFrameJacobian): 6 rows a body, (angular;
-  /// linear) in the ground, row-major, its columns the mobilities in this class's order.
-  void frame_jacobians(const double* q, double* out) const;
+  /// linear) in the ground, row-major, its columns the mobilities in this class's order; at
+  /// its mass centre (robot_setup's com, a station on the body) where at_com.
+  void frame_jacobians(const double* q, double* out, bool at_com = false) const;
   /// Every body's JFDot u at its origin (calcBiasForFrameJacobian): 6 numbers a body,
   /// (angular; linear) in the ground.
   void frame_biases(const double* q, const double* u, double* out) const;

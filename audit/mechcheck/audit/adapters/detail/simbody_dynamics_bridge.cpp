@@ -61,12 +61,14 @@ struct robot_dynamics::impl {
   std::vector<MobilizedBody> moving;  ///< in order
   Force::Gravity gravity;
   std::vector<UIndex> u;              ///< per mobility, in the moving bodies' order
+  std::vector<Vec3> com;              ///< each body's mass centre in its frame, robot_setup's order
   bool free = false;                  ///< the first moving body is a Free root
   mutable State state;
 
   explicit impl(const robot_setup& r)
       : moving(build_robot(r, matter, &all)), gravity(forces, matter, vec3(r.gravity)),
         free(!r.bodies.empty() && r.bodies.front().joint == 3) {
+    for (const auto& b : r.bodies) com.push_back(vec3(b.com));
     std::size_t k = 0;
     for (const auto& b : r.bodies)
       if (b.joint == 0 || b.joint == 1 || b.joint == 3) {
@@ -169,9 +171,11 @@ Array_<MobilizedBodyIndex> indices(const std::vector<MobilizedBody>& bodies) {
 }
 }  // namespace
 
-void robot_dynamics::frame_jacobians(const double* q, double* out) const {
+void robot_dynamics::frame_jacobians(const double* q, double* out, bool at_com) const {
   p_->set(q, nullptr, Stage::Position);
-  const Array_<Vec3> origins(p_->all.size(), Vec3(0));
+  Array_<Vec3> origins(p_->all.size(), Vec3(0));
+  if (at_com)
+    for (std::size_t b = 0; b < p_->all.size(); ++b) origins[unsigned(b)] = p_->com[b];
   Matrix jf;
   p_->matter.calcFrameJacobian(p_->state, indices(p_->all), origins, jf);
   const std::size_t nu = p_->u.size();
