@@ -40,11 +40,14 @@ std::vector<engine_integrator> integrators();
 engine_shapes shapes();
 
 /// btMultiBody's forward dynamics (bullet_dynamics.cpp): a robot becomes a btMultiBody
-/// with a fixed base (the root link) whose links' frames are moved onto their principal axes
-/// at their centres of mass (btMultiBody takes principal moments); the joint accelerations
-/// of its articulated-body algorithm at dt = 0, gravity applied as its dynamics world applies
-/// it, damping off. Mass matrix, bias and inverse dynamics: not offered (the core library
-/// has none).
-dynamics_library dynamics();
+/// whose base is the root link and whose links' frames are moved onto their principal axes
+/// at their centres of mass (btMultiBody takes principal moments); the accelerations of its
+/// articulated-body algorithm at dt = 0, gravity applied as its dynamics world applies it,
+/// damping off. Mass matrix, bias and inverse dynamics: not offered (the core library has
+/// none). A floating base only where floating_base: Bullet solves the base's 6 x 6
+/// articulated inertia by its own block inverse (btMultiBody::solveImatrix), which exceeds
+/// the budget on a light base carrying a heavy link (docs/findings/dynamics.md, "Bullet's
+/// floating base"): measured apart, not held in the campaigns.
+dynamics_library dynamics(bool floating_base = false);
 
 }  // namespace mechcheck::audit::bullet

@@ -9,15 +9,24 @@
 // own); a robot_multibody is made and destroyed where btMultiBody is complete.
 class btMultiBody;
 
+#include <Eigen/Core>
+
 #include "mechcheck/robots/robot.hpp"
 
 namespace mechcheck::audit::bullet {
 
-/// A robot as a btMultiBody on a fixed base (the root link), finalized, damping off.
+/// A robot as a btMultiBody whose base is the root link, fixed at the world's origin or
+/// floating (robots::robot::floating; its pose and velocity the caller's), finalized, damping
+/// off.
 struct robot_multibody {
   std::unique_ptr<btMultiBody> body;
   std::vector<int> coordinate;  ///< per coordinate of the robot, its btMultiBody link
   std::vector<double> mass;     ///< per btMultiBody link
+  /// The base's Bullet frame: its centre of mass in the root link's frame, its principal
+  /// axes P (columns, in the root link's frame), its mass.
+  Eigen::Vector3d base_com = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d base_axes = Eigen::Matrix3d::Identity();
+  double base_mass = 0;
 };
 
 /// Each link's frame put on its centre of mass and principal axes (btMultiBody takes three
