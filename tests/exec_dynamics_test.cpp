@@ -62,7 +62,7 @@ TEST(exec_dynamics, a_right_child_agrees_on_random_robots) {
   EXPECT_NE(c.first_refusal.find(t.library.no_floating_base), std::string::npos) << c.first_refusal;
   for (const auto& f : c.figures) {
     if (audit::kinematic_quantity(f.quantity)) {
-      EXPECT_EQ(f.checked, 0) << "the protocol carries no kinematics";
+      EXPECT_EQ(f.checked, 0) << "the child lists no kinematics";
       continue;
     }
     EXPECT_EQ(f.checked, 20 - c.refused) << audit::dynamics_quantity_name(f.quantity);
@@ -70,6 +70,30 @@ TEST(exec_dynamics, a_right_child_agrees_on_random_robots) {
     EXPECT_LE(f.largest, f.budget) << audit::dynamics_quantity_name(f.quantity);
   }
   EXPECT_EQ(t.failures(), 0);
+}
+
+TEST(exec_dynamics, a_childs_kinematics_are_held_to_forward_kinematics_and_a_jacobian_in_the_link_frame_is_caught) {
+  // A child listing every quantity: the frames, Jacobians (at the frames' origins and the
+  // links' centres of mass), Jdot qdot, the centre of mass, J_c and A_G come back in the
+  // protocol's layouts and are held on random robots; its Jacobians' columns in each link's
+  // own frame disagree, shrunk to a robot as URDF.
+  const audit::exec_dynamics_target t = audit::exec_dynamics(child("kinematics"));
+  const audit::dynamics_campaign c = audit::run_dynamics_campaign(t.library, few(20));
+  EXPECT_TRUE(c.agrees()) << c.disagreement << c.note;
+  int kinematic = 0;
+  for (const auto& f : c.figures) {
+    EXPECT_EQ(f.checked, 20 - c.refused) << audit::dynamics_quantity_name(f.quantity);
+    EXPECT_LE(f.largest, f.budget) << audit::dynamics_quantity_name(f.quantity);
+    kinematic += audit::kinematic_quantity(f.quantity) ? 1 : 0;
+  }
+  EXPECT_EQ(kinematic, 7);
+  const audit::dynamics_check one = audit::check_dynamics(t.library, arm(), state());
+  EXPECT_EQ(one.residuals.size(), 11u);
+  const audit::exec_dynamics_target wrong = audit::exec_dynamics(child("child_frame"));
+  const audit::dynamics_campaign w = audit::run_dynamics_campaign(wrong.library, few(20));
+  ASSERT_FALSE(w.agrees());
+  EXPECT_EQ(w.disagreement.rfind("frame Jacobians: residual", 0), 0u) << w.disagreement;
+  EXPECT_NE(w.counterexample_urdf.find("<robot"), std::string::npos);
 }
 
 TEST(exec_dynamics, a_flipped_bias_sign_is_caught_and_shrunk) {

@@ -15,6 +15,10 @@
 //   held          computes with the robot's links 2^-20 heavier and says so (the load's
 //                 "held" URDF)
 //   held_short    says it holds a robot of one moving joint fewer
+//   kinematics    offers every quantity: the dynamics as `right`, the kinematics from the
+//                 robot's forward kinematics in double (robots/kinematics.hpp)
+//   child_frame   as `kinematics`, its frame Jacobians' columns in each link's own frame
+//                 (the audit must disagree)
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -26,6 +30,7 @@
 
 #include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/robots/dynamics.hpp"
+#include "mechcheck/robots/kinematics.hpp"
 
 using json = nlohmann::json;
 namespace robots = mechcheck::robots;
@@ -50,7 +55,12 @@ void send(const json& j) { std::cout << j.dump() << "\n" << std::flush; }
 
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "right";
+  const bool kinematics = mode == "kinematics" || mode == "child_frame";
   json quantities = mode == "mass_only" ? json{"mass_matrix"} : json{"mass_matrix", "bias", "inverse", "forward"};
+  if (kinematics)
+    for (const char* k : {"frame_poses", "frame_jacobians", "frame_bias_accelerations", "link_com_jacobians",
+                          "centre_of_mass", "com_jacobian", "centroidal_momentum_matrix"})
+      quantities.push_back(k);
   send({{"protocol", "mechcheck"}, {"version", 1}, {"kind", "dynamics"}, {"name", "test_dynamics/" + mode},
         {"origin", "tests/exec/dynamics_child.cpp"}, {"quantities", quantities}});
   std::map<long long, std::unique_ptr<robots::robot_model<double>>> models;
@@ -101,6 +111,56 @@ int main(int argc, char** argv) {
     const auto q = vector_of(r.at("q"));
     const auto n = q.size();
     const auto qdot = r.contains("qdot") ? vector_of(r.at("qdot")) : mechcheck::dynamic_vector<double>::Zero(n).eval();
+    using row_major = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    const int links = static_cast<int>(m.description.links.size());
+    // Each link's Jacobian (at its origin, or at_com its centre of mass), 6 L x n.
+    const auto jacobians = [&](bool at_com) {
+      row_major j(6 * links, n);
+      const std::vector<robots::link_state<double>> poses = robots::link_poses(m, q);
+      for (int l = 0; l < links; ++l) {
+        const Eigen::Vector3d p = at_com ? m.com[std::size_t(l)] : Eigen::Vector3d::Zero();
+        mechcheck::dynamic_matrix<double> jl = robots::point_jacobian(m, q, l, mechcheck::vector3<double>(p));
+        if (mode == "child_frame")
+          for (int half = 0; half < 2; ++half)
+            jl.middleRows(3 * half, 3) = poses[std::size_t(l)].rotation.transpose() * jl.middleRows(3 * half, 3);
+        j.middleRows(6 * l, 6) = jl;
+      }
+      return j;
+    };
+    if (op == "frame_poses") {
+      json x = json::array();
+      for (const auto& s : robots::link_poses(m, q)) {
+        for (int i = 0; i < 3; ++i) x.push_back(s.origin(i));
+        for (int c = 0; c < 3; ++c)
+          for (int i = 0; i < 3; ++i) x.push_back(s.rotation(i, c));
+      }
+      send({{"poses", x}});
+      continue;
+    }
+    if (op == "frame_jacobians" || op == "link_com_jacobians") {
+      const row_major j = jacobians(op == "link_com_jacobians");
+      send({{op == "frame_jacobians" ? "jacobians" : "com_jacobians", numbers(j.data(), j.size())}});
+      continue;
+    }
+    if (op == "frame_bias_accelerations") {
+      json x = json::array();
+      for (int l = 0; l < links; ++l) {
+        const mechcheck::dynamic_vector<double> a = robots::point_bias_acceleration(m, q, qdot, l);
+        for (int i = 0; i < 6; ++i) x.push_back(a(i));
+      }
+      send({{"accelerations", x}});
+      continue;
+    }
+    if (op == "centre_of_mass") {
+      const mechcheck::vector3<double> c = robots::centre_of_mass(m, q);
+      send({{"com", numbers(c.data(), 3)}});
+      continue;
+    }
+    if (op == "com_jacobian" || op == "centroidal_momentum_matrix") {
+      const row_major j = op == "com_jacobian" ? robots::com_jacobian(m, q) : robots::centroidal_momentum_matrix(m, q);
+      send({{op == "com_jacobian" ? "jc" : "ag", numbers(j.data(), j.size())}});
+      continue;
+    }
     const auto terms = robots::motion_terms_at(m, q, qdot);
     if (op == "mass_matrix") {
       const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> mm = terms.mass_matrix;

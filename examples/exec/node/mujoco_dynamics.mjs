@@ -15,6 +15,16 @@
 // is read back from mjModel (body_pos, body_quat, body_ipos, body_iquat, body_inertia,
 // body_mass, jnt_axis) and sent as the load's "held" URDF, so the audit holds MuJoCo's
 // algorithms to that robot and measures the compiler's change apart.
+//
+// The kinematics: each link's frame (xpos, xmat after mj_kinematics), its Jacobian
+// (mj_jacBody) and at its centre of mass (mj_jacBodyCom) after mj_kinematics and mj_comPos,
+// and Jdot qdot (mj_jacDot at xpos, after mj_comVel as well, times qvel) on a second model of
+// the robot compiled without fusing (`<compiler fusestatic="false"/>` in the URDF's <mujoco>
+// element: every link a body of its name); the centre of mass (the world body's subtree_com),
+// J_c (mj_jacSubtreeCom of the world body) on that model too, so that a root welded to the
+// world keeps its mass; A_G column by column from the world body's subtree mass times
+// subtree_linvel and subtree_angmom after mj_subtreeVel at qvel = e_k, on the model the
+// dynamics use (the held robot's inertias, as the audit holds A_G to them).
 import loadMujoco from '@mujoco/mujoco';
 import { Refused, serveDynamics } from './protocol.mjs';
 
@@ -58,9 +68,56 @@ function movingJoints(urdf) {
   return names;
 }
 
+/** The names of a URDF text's links, in the order of their elements (the robot's links). */
+const linkNames = (urdf) => Array.from(urdf.matchAll(/<link\b[^>]*\bname="([^"]*)"/g), (x) => x[1]);
+
+/** A compiled model with its data and the robot's coordinates at its addresses. */
+class Compiled {
+  constructor(xml, gravity, joints) {
+    this.m = mj.MjModel.from_xml_string(xml);
+    for (let i = 0; i < 3; ++i) this.m.opt.gravity[i] = gravity[i];
+    this.d = new mj.MjData(this.m);
+    this.qpos = [];
+    this.dof = [];
+    for (const name of joints) {
+      const id = mj.mj_name2id(this.m, JOINT, name);
+      if (id < 0) throw new Refused(`the model has no joint ${name}`);
+      this.qpos.push(this.m.jnt_qposadr[id]);
+      this.dof.push(this.m.jnt_dofadr[id]);
+    }
+  }
+  set(q, qdot) {
+    mj.mj_resetData(this.m, this.d);
+    for (let i = 0; i < this.qpos.length; ++i) {
+      this.d.qpos[this.qpos[i]] = q[i];
+      this.d.qvel[this.dof[i]] = qdot ? qdot[i] : 0;
+    }
+  }
+  /** Rows of a 3 x nv MuJoCo Jacobian at the robot's coordinates. */
+  columns(jac) {
+    const nv = this.m.nv;
+    return [0, 1, 2].map((r) => this.dof.map((k) => jac[r * nv + k]));
+  }
+  free() {
+    this.d.delete();
+    this.m.delete();
+  }
+}
+
 class Model {
   constructor(urdf, gravity) {
     const joints = movingJoints(urdf);
+    this.links = linkNames(urdf);
+    try {
+      // A second model without fusing, for the links' kinematics (every link a body).
+      this.k = new Compiled(urdf.replace(/<robot\b[^>]*>/, (open) => `${open}<mujoco><compiler fusestatic="false"/></mujoco>`),
+        gravity, joints);
+    } catch (e) {
+      throw e instanceof Refused ? e : new Refused(`MuJoCo ${version} did not compile the robot unfused: ${e?.message ?? e}`);
+    }
+    this.body = this.links.map((name) => mj.mj_name2id(this.k.m, BODY, name));
+    const missing = this.links.find((name, l) => this.body[l] < 0);
+    if (missing !== undefined) throw new Refused(`the unfused model has no body ${missing}`);
     try {
       this.m = mj.MjModel.from_xml_string(urdf);
     } catch (e) {
@@ -156,9 +213,74 @@ class Model {
     mj.mj_forward(this.m, this.d);
     return this.read(this.d.qacc);
   }
+  /** The links' bodies placed at q (mj_kinematics, mj_comPos) on the unfused model. */
+  place(q, qdot) {
+    this.k.set(q, qdot);
+    mj.mj_kinematics(this.k.m, this.k.d);
+    mj.mj_comPos(this.k.m, this.k.d);
+  }
+  framePoses(q) {
+    this.place(q);
+    const { d } = this.k;
+    return this.body.flatMap((b) => {
+      const x = Array.from(d.xpos.slice(3 * b, 3 * b + 3)), r = Array.from(d.xmat.slice(9 * b, 9 * b + 9));
+      return [...x, r[0], r[3], r[6], r[1], r[4], r[7], r[2], r[5], r[8]];
+    });
+  }
+  /** Each link's 6 x n Jacobian by f (mj_jacBody or mj_jacBodyCom), stacked row by row. */
+  jacobians(q, f) {
+    this.place(q);
+    const { m, d } = this.k;
+    return this.body.flatMap((b) => {
+      const [jacp, jacr] = withBuffers([3 * m.nv, 3 * m.nv], (p, r) => f(m, d, p, r, b));
+      return [...this.k.columns(jacp), ...this.k.columns(jacr)].flat();
+    });
+  }
+  frameJacobians(q) {
+    return this.jacobians(q, mj.mj_jacBody);
+  }
+  linkComJacobians(q) {
+    return this.jacobians(q, mj.mj_jacBodyCom);
+  }
+  /** mj_jacDot at each body's origin (xpos) times qvel: (a_o; alpha) at qacc = 0. */
+  frameBiasAccelerations(q, qdot) {
+    this.place(q, qdot);
+    const { m, d } = this.k;
+    mj.mj_comVel(m, d);
+    return this.body.flatMap((b) => {
+      const point = Array.from(d.xpos.slice(3 * b, 3 * b + 3));
+      const [jacp, jacr] = withBuffers([3 * m.nv, 3 * m.nv], (p, r) => mj.mj_jacDot(m, d, p, r, point, b));
+      return [...this.k.columns(jacp), ...this.k.columns(jacr)].map((row) => row.reduce((s, j, i) => s + j * qdot[i], 0));
+    });
+  }
+  centreOfMass(q) {
+    this.place(q);
+    return Array.from(this.k.d.subtree_com.slice(0, 3));
+  }
+  comJacobian(q) {
+    this.place(q);
+    const { m, d } = this.k;
+    const [jacp] = withBuffers([3 * m.nv], (p) => mj.mj_jacSubtreeCom(m, d, p, 0));
+    return this.k.columns(jacp).flat();
+  }
+  /** Column k: the world body's subtree mass times subtree_linvel, and subtree_angmom, after
+   * mj_subtreeVel at qvel = e_k on the model of the dynamics; rows (P; L_G), row by row. */
+  centroidalMomentumMatrix(q) {
+    const columns = this.dof.map((k, i) => {
+      this.set(q, this.dof.map((_, j) => (j === i ? 1 : 0)));
+      mj.mj_kinematics(this.m, this.d);
+      mj.mj_comPos(this.m, this.d);
+      mj.mj_comVel(this.m, this.d);
+      mj.mj_subtreeVel(this.m, this.d);
+      const mass = this.m.body_subtreemass[0];
+      return [...Array.from(this.d.subtree_linvel.slice(0, 3), (v) => v * mass), ...Array.from(this.d.subtree_angmom.slice(0, 3))];
+    });
+    return [0, 1, 2, 3, 4, 5].flatMap((r) => columns.map((c) => c[r]));
+  }
   free() {
     this.d.delete();
     this.m.delete();
+    this.k.free();
   }
 }
 
@@ -168,7 +290,13 @@ await serveDynamics(
     origin: `MuJoCo ${version} (npm @mujoco/mujoco, WebAssembly, double): its URDF import (MjModel.from_xml_string); ` +
       'mj_fullM of qM, qfrc_bias and qacc after mj_forward, qfrc_inverse after mj_inverse; qfrc_bias is Coriolis, ' +
       'centrifugal and gravity (M qacc + qfrc_bias = qfrc_applied, the sign of h); no armature, damping or friction ' +
-      'loss set; the robot the compiler holds read back from mjModel',
+      'loss set; the robot the compiler holds read back from mjModel; each link\'s frame (xpos, xmat), Jacobian ' +
+      '(mj_jacBody), Jacobian at its centre of mass (mj_jacBodyCom) and Jdot qdot (mj_jacDot at xpos, times qvel), ' +
+      'the centre of mass (the world body\'s subtree_com) and J_c (mj_jacSubtreeCom) on the robot compiled without ' +
+      'fusing (fusestatic false); A_G from mj_subtreeVel at qvel = e_k (the world body\'s subtree mass times ' +
+      'subtree_linvel, subtree_angmom)',
+    quantities: ['mass_matrix', 'bias', 'inverse', 'forward', 'frame_poses', 'frame_jacobians',
+      'frame_bias_accelerations', 'link_com_jacobians', 'centre_of_mass', 'com_jacobian', 'centroidal_momentum_matrix'],
   },
   (urdf, gravity) => new Model(urdf, gravity),
 );

@@ -144,7 +144,10 @@ export async function serveEngine(hello, start, moments, withoutMass) {
  * closes our input. load(urdf, gravity) builds a model of the robot, or throws Refused for a
  * robot the library cannot express; a model has massMatrix(q) (row by row), bias(q, qdot),
  * inverse(q, qdot, qddot), forward(q, qdot, tau), optionally `held` (the robot it computes
- * with, as URDF, where its builder changed the one given) and free(). */
+ * with, as URDF, where its builder changed the one given) and free(); and, where hello's
+ * `quantities` lists them, the kinematics of docs/protocol.md: framePoses(q),
+ * frameJacobians(q), frameBiasAccelerations(q, qdot), linkComJacobians(q), centreOfMass(q),
+ * comJacobian(q), centroidalMomentumMatrix(q), each in the protocol's layout. */
 export async function serveDynamics(hello, load) {
   send({ protocol: 'mechcheck', version: 1, kind: 'dynamics', numbers: 'decimal',
     quantities: ['mass_matrix', 'bias', 'inverse', 'forward'], ...hello });
@@ -175,6 +178,14 @@ export async function serveDynamics(hello, load) {
         else if (r.op === 'bias') send({ h: out(m.bias(numbers(r.q), numbers(r.qdot))) });
         else if (r.op === 'inverse') send({ tau: out(m.inverse(numbers(r.q), numbers(r.qdot), numbers(r.qddot))) });
         else if (r.op === 'forward') send({ qddot: out(m.forward(numbers(r.q), numbers(r.qdot), numbers(r.tau))) });
+        else if (r.op === 'frame_poses') send({ poses: out(m.framePoses(numbers(r.q))) });
+        else if (r.op === 'frame_jacobians') send({ jacobians: out(m.frameJacobians(numbers(r.q))) });
+        else if (r.op === 'frame_bias_accelerations')
+          send({ accelerations: out(m.frameBiasAccelerations(numbers(r.q), numbers(r.qdot))) });
+        else if (r.op === 'link_com_jacobians') send({ com_jacobians: out(m.linkComJacobians(numbers(r.q))) });
+        else if (r.op === 'centre_of_mass') send({ com: out(m.centreOfMass(numbers(r.q))) });
+        else if (r.op === 'com_jacobian') send({ jc: out(m.comJacobian(numbers(r.q))) });
+        else if (r.op === 'centroidal_momentum_matrix') send({ ag: out(m.centroidalMomentumMatrix(numbers(r.q))) });
         else send({ error: `unknown op ${JSON.stringify(r.op)}` });
       }
     } catch (e) {

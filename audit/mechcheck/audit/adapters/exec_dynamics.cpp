@@ -28,13 +28,13 @@ const char* reply_field(dynamics_quantity q) {
     case dynamics_quantity::bias: return "h";
     case dynamics_quantity::inverse: return "tau";
     case dynamics_quantity::forward: return "qddot";
-    case dynamics_quantity::frame_poses:
-    case dynamics_quantity::frame_jacobians:
-    case dynamics_quantity::frame_bias_accelerations:
-    case dynamics_quantity::link_com_jacobians:
-    case dynamics_quantity::centre_of_mass:
-    case dynamics_quantity::com_jacobian:
-    case dynamics_quantity::centroidal_momentum_matrix: break;  // not carried (exec_wire.cpp)
+    case dynamics_quantity::frame_poses: return "poses";
+    case dynamics_quantity::frame_jacobians: return "jacobians";
+    case dynamics_quantity::frame_bias_accelerations: return "accelerations";
+    case dynamics_quantity::link_com_jacobians: return "com_jacobians";
+    case dynamics_quantity::centre_of_mass: return "com";
+    case dynamics_quantity::com_jacobian: return "jc";
+    case dynamics_quantity::centroidal_momentum_matrix: return "ag";
   }
   return "?";
 }
@@ -47,7 +47,8 @@ class exec_dynamics_model final : public dynamics_model {
         urdf_(to_urdf(robot)),
         gravity_(robot.gravity),
         robot_(robot.name),
-        n_(robots::validate(robot).dofs) {
+        n_(robots::validate(robot).dofs),
+        links_(static_cast<int>(robot.links.size())) {
     load();
   }
   ~exec_dynamics_model() override {
@@ -78,6 +79,36 @@ class exec_dynamics_model final : public dynamics_model {
   std::optional<Eigen::VectorXd> forward(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                                          const Eigen::VectorXd& tau) override {
     return vector(dynamics_quantity::forward, {{"q", &q}, {"qdot", &qdot}, {"tau", &tau}});
+  }
+  /// The kinematics (dynamics_quantity's layouts): the poses link by link, 12 numbers each
+  /// (the 12 x L matrix by columns); every other matrix row by row.
+  std::optional<Eigen::MatrixXd> frame_poses(const Eigen::VectorXd& q) override {
+    std::vector<double> p;
+    if (!ask(dynamics_quantity::frame_poses, {{"q", &q}}, 12 * links_, p)) return std::nullopt;
+    return Eigen::Map<const Eigen::MatrixXd>(p.data(), 12, links_);
+  }
+  std::optional<Eigen::MatrixXd> frame_jacobians(const Eigen::VectorXd& q) override {
+    return matrix(dynamics_quantity::frame_jacobians, {{"q", &q}}, 6 * links_, n_);
+  }
+  std::optional<Eigen::VectorXd> frame_bias_accelerations(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) override {
+    std::optional<Eigen::MatrixXd> a =
+        matrix(dynamics_quantity::frame_bias_accelerations, {{"q", &q}, {"qdot", &qdot}}, 6 * links_, 1);
+    if (!a) return std::nullopt;
+    return Eigen::VectorXd(*a);
+  }
+  std::optional<Eigen::MatrixXd> link_com_jacobians(const Eigen::VectorXd& q) override {
+    return matrix(dynamics_quantity::link_com_jacobians, {{"q", &q}}, 6 * links_, n_);
+  }
+  std::optional<Eigen::VectorXd> centre_of_mass(const Eigen::VectorXd& q) override {
+    std::optional<Eigen::MatrixXd> c = matrix(dynamics_quantity::centre_of_mass, {{"q", &q}}, 3, 1);
+    if (!c) return std::nullopt;
+    return Eigen::VectorXd(*c);
+  }
+  std::optional<Eigen::MatrixXd> com_jacobian(const Eigen::VectorXd& q) override {
+    return matrix(dynamics_quantity::com_jacobian, {{"q", &q}}, 3, n_);
+  }
+  std::optional<Eigen::MatrixXd> centroidal_momentum_matrix(const Eigen::VectorXd& q) override {
+    return matrix(dynamics_quantity::centroidal_momentum_matrix, {{"q", &q}}, 6, n_);
   }
 
  private:
@@ -127,6 +158,13 @@ class exec_dynamics_model final : public dynamics_model {
     return r;
   }
 
+  /// A rows x cols matrix sent row by row.
+  std::optional<Eigen::MatrixXd> matrix(dynamics_quantity quantity, const fields& in, int rows, int cols) {
+    std::vector<double> y;
+    if (!ask(quantity, in, rows * cols, y)) return std::nullopt;
+    return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(y.data(), rows, cols);
+  }
+
   std::optional<Eigen::VectorXd> vector(dynamics_quantity quantity, const fields& in) {
     std::vector<double> y;
     if (!ask(quantity, in, n_, y)) return std::nullopt;
@@ -165,6 +203,7 @@ class exec_dynamics_model final : public dynamics_model {
   Eigen::Vector3d gravity_;
   std::string robot_;
   int n_ = 0;
+  int links_ = 0;  ///< the robot's links, in the order of its <link> elements
   long long id_ = 0;
   int generation_ = 0;  ///< the session's failures when the model was loaded
   std::optional<robots::robot> held_;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <iterator>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -160,9 +161,15 @@ const char* quantity_op(dynamics_quantity q) {
 }
 
 namespace {
-/// The quantities the protocol's dynamics kind carries (the kinematics not yet).
-constexpr dynamics_quantity all_quantities[] = {dynamics_quantity::mass_matrix, dynamics_quantity::bias,
-                                                dynamics_quantity::inverse, dynamics_quantity::forward};
+/// The quantities the protocol's dynamics kind carries: all of them.
+constexpr const auto& all_quantities = all_dynamics_quantities;
+
+/// Their names, for a message: "mass_matrix", "bias", ...
+std::string quantity_names() {
+  std::string out;
+  for (const dynamics_quantity d : all_quantities) out += std::string(out.empty() ? "" : ", ") + "\"" + quantity_op(d) + "\"";
+  return out;
+}
 
 /// The claims of a handshake or of one of its integrators.
 claims claims_of(const json& object, const std::string& what) {
@@ -282,15 +289,15 @@ exec_protocol::handshake_fields handshake_of(const json& h, std::string_view kin
   }
   if (kind == "dynamics") {
     const auto it = h.find("quantities");
-    if (it == h.end() || !it->is_array() || it->empty() || it->size() > 4)
-      throw exec_error(what + ": a dynamics library's handshake lists its \"quantities\" (1 to 4 of \"mass_matrix\", "
-                       "\"bias\", \"inverse\", \"forward\")");
+    constexpr std::size_t known = std::size(all_quantities);
+    if (it == h.end() || !it->is_array() || it->empty() || it->size() > known)
+      throw exec_error(what + ": a dynamics library's handshake lists its \"quantities\" (1 to " +
+                       std::to_string(known) + " of " + quantity_names() + ")");
     for (const json& q : *it) {
       const auto named = std::find_if(std::begin(all_quantities), std::end(all_quantities),
                                       [&](dynamics_quantity d) { return q == quantity_op(d); });
       if (named == std::end(all_quantities))
-        throw exec_error(what + ": quantity " + excerpt_json(q) + " is not one of \"mass_matrix\", \"bias\", " +
-                         "\"inverse\", \"forward\"");
+        throw exec_error(what + ": quantity " + excerpt_json(q) + " is not one of " + quantity_names());
       if (std::find(out.quantities.begin(), out.quantities.end(), *named) != out.quantities.end())
         throw exec_error(what + ": quantity " + excerpt_json(q) + " is listed twice");
       out.quantities.push_back(*named);
