@@ -1,12 +1,14 @@
 #pragma once
 // Libraries the dynamics audit must catch: one computing exactly with a changed description,
-// and the test of a check's disagreement.
+// and the test of a check's disagreement; a floating robot's state.
 
 #include <algorithm>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <utility>
+
+#include <Eigen/Geometry>
 
 #include "mechcheck/audit/dynamics/dynamics.hpp"
 #include "mechcheck/robots.hpp"
@@ -52,6 +54,20 @@ inline audit::dynamics_library wrong_library(std::function<void(rb::robot&)> wro
 /// Whether any quantity of a check is outside its budget.
 inline bool disagrees(const audit::dynamics_check& c) {
   return std::any_of(c.residuals.begin(), c.residuals.end(), [](const audit::dynamics_residual& r) { return !r.within(); });
+}
+
+/// A floating robot's state in dynamics_state's layout: the base at `at` (its quaternion from
+/// the roll, pitch and yaw), the joints' q, and u, udot and Q given whole.
+inline audit::dynamics_state floating_state(const rb::pose& at, const Eigen::VectorXd& q, const Eigen::VectorXd& u,
+                                            const Eigen::VectorXd& udot, const Eigen::VectorXd& force) {
+  const Eigen::Quaterniond r(rb::rpy_rotation<double>(at.rpy));
+  audit::dynamics_state x;
+  x.q.resize(7 + q.size());
+  x.q << at.xyz, r.w(), r.x(), r.y(), r.z(), q;
+  x.qdot = u;
+  x.qddot = udot;
+  x.tau = force;
+  return x;
 }
 
 }  // namespace dynamics_fakes

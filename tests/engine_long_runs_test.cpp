@@ -10,6 +10,7 @@
 
 #include "mechcheck/audit/engines/engines.hpp"
 #include "mechcheck/audit/studies.hpp"
+#include "mechcheck/audit/verdicts.hpp"
 #include "mechcheck/reference/tops.hpp"
 #include "reference_engine.hpp"
 
