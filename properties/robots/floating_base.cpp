@@ -270,4 +270,92 @@ struct floating_jacobian {
 };
 MECHCHECK_LAW(floating_jacobian);
 
+
+/// The centre of mass at t along the motion: the base along its body twist, the joints along
+/// q + t qdot.
+template <class S, class T>
+mc::vector3<S> com_along(const floating_sample<T>& s, const S& t) {
+  const Eigen::Index n = s.q.size();
+  dynamic_vector<S> q(n), still = dynamic_vector<S>::Constant(n, mc::lift<S>(0));
+  for (Eigen::Index i = 0; i < n; ++i) q(i) = mc::lift<S>(s.q(i)) + t * mc::lift<S>(s.u(6 + i));
+  const dynamic_vector<S> rest = dynamic_vector<S>::Constant(6, mc::lift<S>(0));
+  const std::vector<rb::link_state<S>> links =
+      rb::link_states(s.model, q, still, rb::detail::floating_root(base_along(s.base, s.u, t), rest));
+  T total = T(0);
+  for (const T& mi : s.model.mass) total += mi;
+  mc::vector3<S> c(mc::lift<S>(0), mc::lift<S>(0), mc::lift<S>(0));
+  for (std::size_t l = 0; l < links.size(); ++l) {
+    if (!(s.model.mass[l] > 0)) continue;
+    const mc::vector3<S> x = links[l].origin + rb::detail::times(links[l].rotation, rb::detail::lifted<S>(s.model.com[l]));
+    c += x * mc::lift<S>(T(s.model.mass[l] / total));
+  }
+  return c;
+}
+
+struct floating_centroidal {
+  static law_info info() {
+    return {"robots.floating_centroidal",
+            "On a floating base, in the base's body twist u: A_G u gives the links' total momentum, which is the "
+            "mass times d/dt c along the motion (J_c u the same), and their angular momentum about the centre of "
+            "mass, which with c x P is their angular momentum about the world's origin, sum (R I R^T omega + m x x "
+            "v) (eqs 79-83)",
+            {"79", "80", "81", "82", "83"}};
+  }
+  // As robots.centroidal_momentum: k = 64 n on the terms, the levers from the world's origin.
+  template <class T>
+  static void property() {
+    const floating_sample<T> s(*floating_cases());
+    const rb::robot_model<T>& m = s.model;
+    const Eigen::Index n = s.q.size();
+    const dynamic_vector<T> h = rb::floating_centroidal_momentum_matrix(m, s.base, s.q) * s.u;
+    const dynamic_vector<T> jc = rb::floating_com_jacobian(m, s.base, s.q) * s.u;
+    T total = T(0);
+    for (const T& mi : m.mass) total += mi;
+    const dynamic_vector<T> cdot =
+        mc::jacobian(
+            [&](const dynamic_vector<mc::ad<T>>& t) -> dynamic_vector<mc::ad<T>> {
+              const mc::vector3<mc::ad<T>> c = com_along(s, t(0));
+              dynamic_vector<mc::ad<T>> out(3);
+              out << c(0), c(1), c(2);
+              return out;
+            },
+            dynamic_vector<T>(dynamic_vector<T>::Zero(1)))
+            .col(0);
+    // The links' momenta one by one, about the world's origin.
+    const std::vector<rb::link_state<T>> links =
+        rb::link_states(m, s.q, dynamic_vector<T>(s.u.tail(n)), rb::detail::floating_root(s.base, s.u));
+    mc::vector3<T> about_origin = mc::vector3<T>::Zero(), momentum = mc::vector3<T>::Zero();
+    for (std::size_t l = 0; l < links.size(); ++l) {
+      if (!(m.mass[l] > 0)) continue;
+      const mc::vector3<T> r = links[l].rotation * m.com[l];
+      const mc::vector3<T> x = links[l].origin + r, v = links[l].velocity + links[l].omega.cross(r);
+      about_origin += links[l].rotation * (m.inertia[l] * (links[l].rotation.transpose() * links[l].omega)) +
+                      m.mass[l] * x.cross(v);
+      momentum += m.mass[l] * v;
+    }
+    const mc::vector3<T> c = rb::floating_centre_of_mass(m, s.base, s.q);
+    const mc::vector3<T> transferred = mc::vector3<T>(h.template tail<3>()) + c.cross(mc::vector3<T>(h.template head<3>()));
+    double length = 1 + s.c.base.xyz.norm(), speed = 0;
+    for (std::size_t j = 0; j < s.c.joints.robot.joints.size(); ++j) {
+      length += s.c.joints.robot.joints[j].origin.xyz.norm();
+      const int k = m.tree.coordinate[j];
+      if (k >= 0 && s.c.joints.robot.joints[j].type == rb::joint_type::prismatic) length += std::abs(s.c.joints.q[std::size_t(k)]);
+    }
+    for (Eigen::Index i = 0; i < s.u.size(); ++i) speed += std::abs(static_cast<double>(s.u(i)));
+    const rb::term_scale ts = rb::term_scales(m, gen::to_tier<double>(s.c.joints.q), s.c.base.xyz.norm());
+    const T linear_scale = T(std::max(ts.mass * speed * length, 1e-300));
+    const T angular_scale = T(std::max((ts.inertia + ts.mass * length * length) * speed, 1e-300));
+    const double k = 64.0 * s.links;
+    for (int i = 0; i < 3; ++i) {
+      const std::string at = "(" + std::to_string(i) + ")";
+      check_close("(A_G u)_linear" + at + " = m d/dt c", h(i), T(total * cdot(i)), linear_scale, k);
+      check_close("(A_G u)_linear" + at + " = sum m v", h(i), momentum(i), linear_scale, k);
+      check_close("(J_c u)" + at + " = d/dt c", jc(i), cdot(i), T(linear_scale / total), 2 * k);
+      check_close("(A_G u)_angular" + at + " + (c x P)" + at + " = sum (R I R^T omega + m x x v)", transferred(i),
+                  about_origin(i), angular_scale, 2 * k);
+    }
+  }
+};
+MECHCHECK_LAW(floating_centroidal);
+
 }  // namespace

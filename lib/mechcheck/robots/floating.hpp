@@ -30,6 +30,9 @@
 ///                                               about the base's origin in its frame
 ///   floating_momentum(m, b, q, u)               (P; L_O) in the world, and its rate along a
 ///   floating_momentum_rate(m, b, q, u, udot)    motion: the wrench of the external forces
+///   floating_centre_of_mass(m, b, q)            c, J_c (3 x 6 + n) and A_G (6 x 6 + n, rows
+///   floating_com_jacobian(m, b, q)              (P; L_G)) in u's coordinates: kinematics.hpp's
+///   floating_centroidal_momentum_matrix(m, b, q)  on a floating base
 
 #include <string>
 #include <vector>
@@ -235,6 +238,44 @@ dynamic_vector<T> floating_momentum_rate(const robot_model<T>& m, const base_pos
     out(3 + i) = derivatives_of(p.angular_about_origin(i), 1)(0);
   }
   return out;
+}
+
+/// The robot's centre of mass in the world on a floating base; singular_error for a robot
+/// without mass.
+template <class T>
+vector3<T> floating_centre_of_mass(const robot_model<T>& m, const base_pose<T>& b, const dynamic_vector<T>& q) {
+  const dynamic_vector<T> rest = dynamic_vector<T>::Zero(m.dofs() + 6);
+  detail::check_floating_state(m, q, {{"u", &rest}}, "floating_centre_of_mass");
+  const detail::momenta<T> s =
+      detail::momenta_of(m, link_states(m, q, dynamic_vector<T>(rest.tail(m.dofs())), detail::floating_root(b, rest)));
+  if (!(s.mass > 0)) throw singular_error("floating_centre_of_mass: robot " + m.description.name + " carries no mass");
+  return s.first_moment / s.mass;
+}
+
+/// A_G on a floating base, 6 x (6 + n): column k is h_G = (P; L_O - c x P) (eq 83 with a =
+/// -c) at u = e_k, the base's body twist and the joints' rates.
+template <class T>
+dynamic_matrix<T> floating_centroidal_momentum_matrix(const robot_model<T>& m, const base_pose<T>& b,
+                                                      const dynamic_vector<T>& q) {
+  const vector3<T> c = floating_centre_of_mass(m, b, q);
+  const Eigen::Index n = m.dofs() + 6;
+  dynamic_matrix<T> a(6, n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    dynamic_vector<T> e = dynamic_vector<T>::Zero(n);
+    e(k) = T(1);
+    const dynamic_vector<T> h = floating_momentum(m, b, q, e);
+    const vector3<T> p = detail::segment3(h, 0), l = detail::segment3(h, 3);
+    a.col(k) << p, vector3<T>(l - c.cross(p));
+  }
+  return a;
+}
+
+/// J_c on a floating base, 3 x (6 + n): cdot = J_c u = P / sum m, A_G's top rows over the mass.
+template <class T>
+dynamic_matrix<T> floating_com_jacobian(const robot_model<T>& m, const base_pose<T>& b, const dynamic_vector<T>& q) {
+  T mass = T(0);
+  for (const T& mi : m.mass) mass += mi;
+  return floating_centroidal_momentum_matrix(m, b, q).topRows(3) / mass;
 }
 
 }  // namespace mechcheck::robots
