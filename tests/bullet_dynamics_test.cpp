@@ -22,7 +22,6 @@ namespace audit = mechcheck::audit;
 using dynamics_fakes::floating_state;
 using robots_test::free_body;
 using robots_test::free_body_closed_form;
-using robots_test::two_link_arm;
 
 /// A light base (1/8 kg, moments 1/8) carrying a heavy arm (256 kg) on a hinge.
 rb::robot light_base_heavy_arm() {
@@ -75,13 +74,7 @@ TEST(bullet_dynamics, bullets_floating_base_is_held_through_its_convention_and_i
     EXPECT_LE((f.library - udot).cwiseAbs().maxCoeff(), f.budget * eps * f.scale) << f.library.transpose();
   }
   {
-    rb::robot r = two_link_arm(2, 1.5, 1, 0.5, 0.375, 0.25, 0.0625);
-    r.floating = true;
-    rb::inertial torso;
-    torso.mass = 5;
-    torso.origin.xyz = {0.125, 0, 0.25};
-    torso.inertia = Eigen::Vector3d(0.5, 0.5, 0.25).asDiagonal();
-    r.links[0].body = torso;
+    const rb::robot r = robots_test::floating_two_link_arm();
     rb::pose at;
     at.xyz = {0.25, 0.5, 1};
     at.rpy = {0.5, -0.25, 1.5};

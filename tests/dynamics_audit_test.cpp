@@ -347,13 +347,7 @@ TEST(dynamics_audit, the_two_link_arm_on_a_floating_base_agrees_and_held_still_g
   // On a moving base every quantity within its budget; on a base held still, with gravity
   // turned with it, the joints' forces of inverse dynamics are the bolted arm's closed form.
   const double m1 = 2, m2 = 1.5, l1 = 1, c1 = 0.5, c2 = 0.375, i1 = 0.25, i2 = 0.0625, g = 9.81;
-  rb::robot r = two_link_arm(m1, m2, l1, c1, c2, i1, i2);
-  r.floating = true;
-  rb::inertial torso;
-  torso.mass = 5;
-  torso.origin.xyz = {0.125, 0, 0.25};
-  torso.inertia = Eigen::Vector3d(0.5, 0.5, 0.25).asDiagonal();
-  r.links[0].body = torso;
+  rb::robot r = robots_test::floating_two_link_arm();  // the arm of these numbers, on a torso
   rb::pose at;
   at.xyz = {0.25, 0.5, 1};
   at.rpy = {0.5, -0.25, 1.5};

@@ -95,6 +95,20 @@ inline arm_closed_form arm_terms(double m1, double m2, double l1, double c1, dou
 /// A free rigid body (a floating base and no joints): mass 3, its centre of mass at c =
 /// (0.25, -0.125, 0.5) and a full inertia I about it, both in its own frame, under a
 /// gravity off the vertical.
+/// The two-link arm (m1 2, m2 1.5, l1 1, c1 1/2, c2 3/8, i1 1/4, i2 1/16) on a floating base:
+/// its base link given a torso of 5 kg, its centre of mass at (1/8, 0, 1/4), moments (1/2, 1/2,
+/// 1/4).
+inline rb::robot floating_two_link_arm() {
+  rb::robot r = two_link_arm(2, 1.5, 1, 0.5, 0.375, 0.25, 0.0625);
+  r.floating = true;
+  rb::inertial torso;
+  torso.mass = 5;
+  torso.origin.xyz = {0.125, 0, 0.25};
+  torso.inertia = Eigen::Vector3d(0.5, 0.5, 0.25).asDiagonal();
+  r.links[0].body = torso;
+  return r;
+}
+
 inline rb::robot free_body() {
   rb::robot r;
   r.name = "free_body";

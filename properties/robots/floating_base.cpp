@@ -1,3 +1,6 @@
+#include <utility>
+#include <vector>
+
 #include "mechcheck/robots/floating.hpp"
 #include "mechcheck/robots/recursive.hpp"
 #include "robots/robots.hpp"
@@ -210,6 +213,20 @@ dynamic_vector<S> link_pose_along(const floating_sample<T>& s, const S& t, std::
   return out;
 }
 
+/// The lengths and speeds of a floating sample's motion: lengths within L = 1 + |p| + the
+/// joints' offsets and slides, speeds within v = the sum of |u|.
+template <class T>
+std::pair<double, double> motion_scales(const floating_sample<T>& s) {
+  double length = 1 + s.c.base.xyz.norm(), speed = 0;
+  for (std::size_t j = 0; j < s.c.joints.robot.joints.size(); ++j) {
+    length += s.c.joints.robot.joints[j].origin.xyz.norm();
+    const int k = s.model.tree.coordinate[j];
+    if (k >= 0 && s.c.joints.robot.joints[j].type == rb::joint_type::prismatic) length += std::abs(s.c.joints.q[std::size_t(k)]);
+  }
+  for (Eigen::Index i = 0; i < s.u.size(); ++i) speed += std::abs(static_cast<double>(s.u(i)));
+  return {length, speed};
+}
+
 struct floating_jacobian {
   static law_info info() {
     return {"robots.floating_jacobian",
@@ -230,15 +247,9 @@ struct floating_jacobian {
     const rb::detail::link_acceleration<T> root{mc::vector3<T>::Zero(), mc::vector3<T>(s.base.rotation * mc::vector3<T>(w_b.cross(v_b)))};
     const std::vector<rb::detail::link_acceleration<T>> accelerations =
         rb::detail::link_accelerations(m, states, s.q, qdot, still, root);
-    // Scales: lengths within L = 1 + |p| + the joints' offsets and slides; speeds within the
-    // sum of |u|; velocities within v L, accelerations v^2 L.
-    double length = 1 + s.c.base.xyz.norm(), speed = 0;
-    for (std::size_t j = 0; j < s.c.joints.robot.joints.size(); ++j) {
-      length += s.c.joints.robot.joints[j].origin.xyz.norm();
-      const int k = m.tree.coordinate[j];
-      if (k >= 0 && s.c.joints.robot.joints[j].type == rb::joint_type::prismatic) length += std::abs(s.c.joints.q[std::size_t(k)]);
-    }
-    for (Eigen::Index i = 0; i < s.u.size(); ++i) speed += std::abs(static_cast<double>(s.u(i)));
+    // Scales: velocities within v L, accelerations v^2 L (motion_scales).
+    const std::pair<double, double> motion = motion_scales(s);  // named: Clang 14 captures no binding
+    const double length = motion.first, speed = motion.second;
     const T velocity_scale = T(std::max(speed * length, 1e-300)), acceleration_scale = T(std::max(speed * speed * length, 1e-300));
     const double k = 64.0 * s.links;
     for (std::size_t l = 0; l < m.description.links.size(); ++l) {
@@ -322,26 +333,13 @@ struct floating_centroidal {
             dynamic_vector<T>(dynamic_vector<T>::Zero(1)))
             .col(0);
     // The links' momenta one by one, about the world's origin.
-    const std::vector<rb::link_state<T>> links =
-        rb::link_states(m, s.q, dynamic_vector<T>(s.u.tail(n)), rb::detail::floating_root(s.base, s.u));
-    mc::vector3<T> about_origin = mc::vector3<T>::Zero(), momentum = mc::vector3<T>::Zero();
-    for (std::size_t l = 0; l < links.size(); ++l) {
-      if (!(m.mass[l] > 0)) continue;
-      const mc::vector3<T> r = links[l].rotation * m.com[l];
-      const mc::vector3<T> x = links[l].origin + r, v = links[l].velocity + links[l].omega.cross(r);
-      about_origin += links[l].rotation * (m.inertia[l] * (links[l].rotation.transpose() * links[l].omega)) +
-                      m.mass[l] * x.cross(v);
-      momentum += m.mass[l] * v;
-    }
+    const summed_momenta<T> sums(
+        m, rb::link_states(m, s.q, dynamic_vector<T>(s.u.tail(n)), rb::detail::floating_root(s.base, s.u)));
+    const mc::vector3<T>&about_origin = sums.about_origin, &momentum = sums.linear;
     const mc::vector3<T> c = rb::floating_centre_of_mass(m, s.base, s.q);
     const mc::vector3<T> transferred = mc::vector3<T>(h.template tail<3>()) + c.cross(mc::vector3<T>(h.template head<3>()));
-    double length = 1 + s.c.base.xyz.norm(), speed = 0;
-    for (std::size_t j = 0; j < s.c.joints.robot.joints.size(); ++j) {
-      length += s.c.joints.robot.joints[j].origin.xyz.norm();
-      const int k = m.tree.coordinate[j];
-      if (k >= 0 && s.c.joints.robot.joints[j].type == rb::joint_type::prismatic) length += std::abs(s.c.joints.q[std::size_t(k)]);
-    }
-    for (Eigen::Index i = 0; i < s.u.size(); ++i) speed += std::abs(static_cast<double>(s.u(i)));
+    const std::pair<double, double> motion = motion_scales(s);  // named: Clang 14 captures no binding
+    const double length = motion.first, speed = motion.second;
     const rb::term_scale ts = rb::term_scales(m, gen::to_tier<double>(s.c.joints.q), s.c.base.xyz.norm());
     const T linear_scale = T(std::max(ts.mass * speed * length, 1e-300));
     const T angular_scale = T(std::max((ts.inertia + ts.mass * length * length) * speed, 1e-300));

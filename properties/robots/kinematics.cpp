@@ -176,16 +176,8 @@ struct centroidal_momentum {
     const dynamic_vector<T> cdot =
         mc::jacobian(com_along, dynamic_vector<T>(dynamic_vector<T>::Zero(1))).col(0);
     // The angular momentum about the origin, link by link.
-    const std::vector<rb::link_state<T>> links = rb::link_states(m, s.q, s.qdot);
-    mc::vector3<T> about_origin = mc::vector3<T>::Zero(), momentum = mc::vector3<T>::Zero();
-    for (std::size_t l = 0; l < links.size(); ++l) {
-      if (!(m.mass[l] > 0)) continue;
-      const mc::vector3<T> r = links[l].rotation * m.com[l];
-      const mc::vector3<T> x = links[l].origin + r, vel = links[l].velocity + links[l].omega.cross(r);
-      about_origin += links[l].rotation * (m.inertia[l] * (links[l].rotation.transpose() * links[l].omega)) +
-                      m.mass[l] * x.cross(vel);
-      momentum += m.mass[l] * vel;
-    }
+    const summed_momenta<T> sums(m, rb::link_states(m, s.q, s.qdot));
+    const mc::vector3<T>&about_origin = sums.about_origin, &momentum = sums.linear;
     const mc::vector3<T> c = rb::centre_of_mass(m, s.q);
     const mc::vector3<T> transferred = mc::vector3<T>(h.template tail<3>()) + c.cross(mc::vector3<T>(h.template head<3>()));
     const double v = speed_scale(s), len = length_scale(s, Eigen::Vector3d::Zero());

@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
+
 #include "mechcheck/harness/generators.hpp"
 #include "mechcheck/harness/law.hpp"
 
@@ -41,6 +43,24 @@ struct robot_sample {
         qddot(gen::to_tier<T>(c.qddot)), tau(gen::to_tier<T>(c.tau)), links(model.dofs()) {
     const std::size_t joints = c.robot.joints.size();
     RC_TAG(std::to_string(joints) + (joints == 1 ? " joint" : " joints"));
+  }
+};
+
+/// The links' total momentum P and angular momentum about the world's origin, sum (R I R^T
+/// omega + m x x v), summed link by link from their states: the laws' own sum, apart from
+/// robots::detail::momenta_of.
+template <class T>
+struct summed_momenta {
+  vector3<T> linear = vector3<T>::Zero(), about_origin = vector3<T>::Zero();
+  summed_momenta(const rb::robot_model<T>& m, const std::vector<rb::link_state<T>>& links) {
+    for (std::size_t l = 0; l < links.size(); ++l) {
+      if (!(m.mass[l] > 0)) continue;
+      const vector3<T> r = links[l].rotation * m.com[l];
+      const vector3<T> x = links[l].origin + r, v = links[l].velocity + links[l].omega.cross(r);
+      about_origin += links[l].rotation * (m.inertia[l] * (links[l].rotation.transpose() * links[l].omega)) +
+                      m.mass[l] * x.cross(v);
+      linear += m.mass[l] * v;
+    }
   }
 };
 
