@@ -12,11 +12,14 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Geometry>
+
 #include "mechcheck/audit/adapters/found.hpp"
 #include "mechcheck/audit/engines/engines.hpp"
 #include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/reference/pendulum.hpp"
 #include "mechcheck/robots/dynamics.hpp"
+#include "mechcheck/robots/floating.hpp"
 
 namespace engine_robots_test {
 using namespace mechcheck;
@@ -258,6 +261,229 @@ TEST(EngineRobots, EveryEngineThatBuildsRobotsStartsWhereTheScenarioSaysAndAgree
     // (A wrong model is the order study's to find: its one-step error is of order h^2 too.)
     const Eigen::VectorXd after = audit::observe(s, run->read()).observables;
     EXPECT_LE((after - x1).norm(), two_local_errors) << e.name;
+  }
+  if (engines == 0) GTEST_SKIP() << "no engine of this build builds robots";
+}
+
+// Robots on a floating base: observed by their centre of mass and momenta.
+
+/// One free body as a floating robot: its frame's origin off its centre of mass, its inertia
+/// a full tensor turned by its inertial origin; `isotropic` gives it moments all 1/2 instead.
+robots::robot free_body_robot(bool isotropic) {
+  Eigen::Matrix3d inertia;
+  inertia << 0.5, 0.0625, 0, 0.0625, 0.75, 0.125, 0, 0.125, 1;
+  if (isotropic) inertia = Eigen::Matrix3d::Identity() / 2;
+  robots::robot r;
+  r.name = "free_body";
+  r.floating = true;
+  r.links = {{"torso", robots::inertial{2, {{0.25, -0.5, 0.125}, {0.5, 0.25, -0.75}}, inertia}}};
+  return r;
+}
+
+/// The skew robot on a floating base, its root given a body.
+robots::robot floating_skew_robot() {
+  robots::robot r = skew_robot();
+  r.name = "floating_skew";
+  r.floating = true;
+  Eigen::Matrix3d i0;
+  i0 << 1, 0.125, 0, 0.125, 0.75, 0, 0, 0, 0.5;
+  r.links[0].body = robots::inertial{3, {{0.125, 0.25, 0}, {0, 0.25, 0.5}}, i0};
+  return r;
+}
+
+/// A floating start: the base at (0.5, -0.25, 1) turned by a unit quaternion of dyadic
+/// components (0.5, 0.5, -0.5, 0.5), its twist (v_b; w_b), then the joints'.
+Eigen::VectorXd floating_q0(const Eigen::VectorXd& joints) {
+  Eigen::VectorXd q(7 + joints.size());
+  q << 0.5, -0.25, 1, 0.5, 0.5, -0.5, 0.5, joints;
+  return q;
+}
+Eigen::VectorXd floating_u0(const Eigen::VectorXd& joints) {
+  Eigen::VectorXd u(6 + joints.size());
+  u << 0.75, -0.5, 0.25, 0.5, -1, 1.5, joints;
+  return u;
+}
+
+TEST(EngineRobots, AFloatingFreeBodysReferenceIsItsCentreOfMassParabolaAndItsConstantMomenta) {
+  const robots::robot r = free_body_robot(false);
+  const Eigen::VectorXd q0 = floating_q0(Eigen::VectorXd(0)), u0 = floating_u0(Eigen::VectorXd(0));
+  const audit::scenario s = audit::robot_scenario("free_body", r, q0, u0, 2);
+  ASSERT_EQ(s.classes.size(), 3u);
+  // By hand: R from the quaternion, c = p + R c_l, cdot = R (v_b + w_b x c_l), P = m cdot,
+  // L_G = R I_c w_b with I_c = R_o I R_o^T the tensor at the centre of mass in the link's frame.
+  const Eigen::Matrix3d turn = Eigen::Quaterniond(0.5, 0.5, -0.5, 0.5).toRotationMatrix();
+  const robots::inertial& in = *r.links[0].body;
+  const Eigen::Matrix3d ro = robots::rpy_rotation<double>(in.origin.rpy);
+  const Eigen::Vector3d c_l = in.origin.xyz, v_b = u0.head<3>(), w_b = u0.tail<3>(), g = r.gravity;
+  const Eigen::Vector3d c0 = q0.head<3>() + turn * c_l, cdot0 = turn * (v_b + w_b.cross(c_l));
+  const Eigen::Vector3d l0 = turn * (ro * in.inertia * ro.transpose()) * w_b;
+  for (const double t : {0.0, 0.75, 2.0}) {
+    const Eigen::VectorXd x = s.exact(t);
+    const Eigen::Vector3d c = c0 + cdot0 * t + g * (t * t / 2), p = 2 * (cdot0 + g * t);
+    EXPECT_LE((x.head<3>() - c).norm(), 16 * eps * s.scale) << "t = " << t;
+    EXPECT_LE((x.segment<3>(3) - p).norm(), 16 * eps * s.scale) << "t = " << t;
+    EXPECT_LE((x.tail<3>() - l0).norm(), 16 * eps * s.scale) << "t = " << t;
+  }
+  // The observation at the start is the reference's, and its energy T + V.
+  audit::body_reading start;
+  start.joint_q = q0;
+  start.joint_v = u0;
+  const audit::engine_observation o = audit::observe(s, start);
+  EXPECT_LE((o.observables - s.exact(0)).norm(), 16 * eps * s.scale);
+  const double kinetic = 2 * cdot0.squaredNorm() / 2 + w_b.dot(ro * in.inertia * ro.transpose() * w_b) / 2;
+  EXPECT_NEAR(o.energy, kinetic - 2 * g.dot(c0), 16 * eps * (kinetic + 2 * g.norm() * c0.norm()));
+  EXPECT_EQ(s.momentum, audit::scenario::momentum_law::vector);
+}
+
+/// An engine of the isotropic free body: its rotation exact (the angular velocity in the world
+/// is constant), its centre of mass by explicit Euler (order 1); `world_twist` reports the
+/// base's linear velocity in the world instead of the base's frame.
+class free_body_run final : public audit::engine_run {
+ public:
+  free_body_run(const audit::scenario& s, bool world_twist) : world_twist_(world_twist) {
+    const robot_start_view r{*s.robot};
+    c_l_ = r.com();
+    turn_ = Eigen::Quaterniond(r.q0(3), r.q0(4), r.q0(5), r.q0(6)).normalized().toRotationMatrix();
+    omega_ = turn_ * r.u0.tail<3>();
+    c_ = r.q0.head<3>() + turn_ * c_l_;
+    cdot_ = turn_ * (r.u0.head<3>() + r.u0.tail<3>().cross(c_l_));
+    g_ = s.robot->robot.gravity;
+  }
+  void step(double h) override {
+    c_ += h * cdot_;
+    cdot_ += h * g_;
+    turn_ = Eigen::AngleAxisd(h * omega_.norm(), omega_.normalized()).toRotationMatrix() * turn_;
+  }
+  audit::body_reading read() const override {
+    audit::body_reading r;
+    const Eigen::Quaterniond unit(turn_);
+    const Eigen::Vector3d arm = turn_ * c_l_, v = cdot_ - omega_.cross(arm);
+    r.joint_q.resize(7);
+    r.joint_q << c_ - arm, unit.w(), unit.x(), unit.y(), unit.z();
+    r.joint_v.resize(6);
+    r.joint_v << (world_twist_ ? v : Eigen::Vector3d(turn_.transpose() * v)), turn_.transpose() * omega_;
+    return r;
+  }
+
+ private:
+  struct robot_start_view {
+    const audit::robot_start& start;
+    const Eigen::VectorXd& q0 = start.q0;
+    const Eigen::VectorXd& u0 = start.qdot0;
+    Eigen::Vector3d com() const { return start.robot.links[0].body->origin.xyz; }
+  };
+  bool world_twist_;
+  Eigen::Vector3d c_l_, c_, cdot_, omega_, g_;
+  Eigen::Matrix3d turn_;
+};
+
+audit::engine_integrator free_body_engine(std::string name, bool world_twist) {
+  audit::engine_integrator e;
+  e.name = std::move(name);
+  e.origin = "engine_robots_test: the isotropic free body, its centre of mass by explicit Euler";
+  e.declared.order = 1;
+  e.multibody = true;
+  e.robots = true;
+  e.start = [world_twist](const audit::scenario& s) -> std::unique_ptr<audit::engine_run> {
+    return std::make_unique<free_body_run>(s, world_twist);
+  };
+  return e;
+}
+
+TEST(EngineRobots, AFloatingBodysEngineIsHeldToItsCentreOfMassAndAReadingInTheWrongFrameIsContradicted) {
+  const audit::scenario s = audit::robot_scenario("free_body", free_body_robot(true), floating_q0(Eigen::VectorXd(0)),
+                                                  floating_u0(Eigen::VectorXd(0)), 0.5);
+  const audit::engine_options o = robot_options(s);
+  const auto right = audit::audit_engine(free_body_engine("test::euler", false), o);
+  ASSERT_EQ(right.scenarios.size(), 1u);
+  EXPECT_EQ(right.scenarios[0].failure, "");
+  EXPECT_EQ(right.order.result, outcome::confirmed) << right.order.measured << ": " << right.order.evidence;
+  ASSERT_EQ(right.scenarios[0].classes.size(), 3u);
+  EXPECT_EQ(right.scenarios[0].classes[0].first, "centre of mass");
+  EXPECT_NEAR(right.scenarios[0].classes[0].second.fit.value, 1, 0.05);
+  EXPECT_EQ(right.scenarios[0].readout, "the engine's base pose and twist and joint coordinates");
+  const auto wrong = audit::audit_engine(free_body_engine("test::euler/world_twist", true), o);
+  EXPECT_EQ(wrong.order.result, outcome::contradicted) << wrong.order.measured;
+}
+
+TEST(EngineRobots, BadFloatingRobotScenariosAreTypedErrors) {
+  const robots::robot r = floating_skew_robot();
+  const Eigen::VectorXd joints = Eigen::VectorXd::Zero(2);
+  EXPECT_THROW(audit::robot_scenario("r", r, Eigen::VectorXd::Zero(2), Eigen::VectorXd::Zero(2)), dimension_error);
+  EXPECT_THROW(audit::robot_scenario("r", r, floating_q0(joints), Eigen::VectorXd::Zero(7)), dimension_error);
+  Eigen::VectorXd zero_turn = floating_q0(joints);
+  zero_turn.segment<4>(3).setZero();
+  EXPECT_THROW(audit::robot_scenario("r", r, zero_turn, floating_u0(joints)), domain_error);
+  robots::robot massless = r;
+  for (auto& l : massless.links) l.body.reset();
+  EXPECT_THROW(audit::robot_scenario("r", massless, floating_q0(joints), floating_u0(joints)), robots::robot_error);
+  EXPECT_THROW(audit::random_floating_robot_scenarios(-1, 1), domain_error);
+  EXPECT_THROW(audit::random_floating_robot_scenarios(1, 1, 9), domain_error);
+  const audit::scenario s = audit::robot_scenario("r", r, floating_q0(joints), floating_u0(joints));
+  audit::body_reading reading;
+  reading.joint_q = Eigen::VectorXd::Zero(2);
+  reading.joint_v = Eigen::VectorXd::Zero(2);
+  EXPECT_THROW(audit::observe(s, reading), dimension_error);
+}
+
+TEST(EngineRobots, RandomFloatingRobotsAreTheSameForASeedWhateverTheirCount) {
+  const auto three = audit::random_floating_robot_scenarios(3, 7), two = audit::random_floating_robot_scenarios(2, 7);
+  ASSERT_EQ(three.size(), 3u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(three[k].name, "floating_7_" + std::to_string(k));
+    EXPECT_EQ(audit::to_urdf(three[k].robot->robot), audit::to_urdf(two[k].robot->robot));
+    EXPECT_EQ(three[k].robot->q0, two[k].robot->q0);
+    EXPECT_EQ(three[k].robot->qdot0, two[k].robot->qdot0);
+  }
+  for (const auto& s : three) {
+    EXPECT_TRUE(s.robot->robot.floating);
+    EXPECT_EQ(s.robot->q0.size(), s.robot->qdot0.size() + 1);
+    EXPECT_EQ(s.classes.size(), 3u);
+  }
+}
+
+TEST(EngineRobots, EveryEngineThatBuildsRobotsStartsAFloatingRobotWhereTheScenarioSaysAndAgreesOverAFirstStep) {
+  Eigen::VectorXd joints(2), rates(2);
+  joints << 0.5, -0.25;
+  rates << 1, 0.5;
+  const audit::scenario s = audit::robot_scenario("floating_skew", floating_skew_robot(), floating_q0(joints),
+                                                  floating_u0(rates), 0.25);
+  const Eigen::VectorXd x0 = s.exact(0);
+  const double h = 1.0 / 1024;
+  const Eigen::VectorXd x1 = s.exact(h);
+  // A first-order method's local error in the centre of mass c(s) along the chart: explicit
+  // Euler misses h^2 / 2 (cddot - kappa), semi-implicit Euler h^2 (cddot - kappa / 2), with
+  // cddot = g and kappa = d2c/ds2 (u, u) = Jdot_c u, the momentum's rate at udot = 0 over the
+  // mass: both within h^2 (|g| + |kappa|). A base twist taken in the wrong frame moves the
+  // centre of mass by order h.
+  const robots::robot_model<double> model(s.robot->robot);
+  double mass = 0;
+  for (const double m : model.mass) mass += m;
+  const robots::base_pose<double> b{Eigen::Quaterniond(0.5, 0.5, -0.5, 0.5).toRotationMatrix(), s.robot->q0.head<3>()};
+  const Eigen::VectorXd rest = Eigen::VectorXd::Zero(8), u0 = s.robot->qdot0;
+  const Eigen::VectorXd rate = robots::floating_momentum_rate(model, b, joints, u0, rest);
+  const Eigen::Vector3d kappa = rate.head<3>() / mass;
+  const double two_local_errors = h * h * (s.robot->robot.gravity.norm() + kappa.norm());
+  int engines = 0;
+  for (const auto& e : audit::engines_found()) {
+    if (!e.robots) continue;
+    std::unique_ptr<audit::engine_run> run;
+    try {
+      run = e.start(s);
+    } catch (const audit::scenario_refused& why) {  // an integrator this build cannot run (CPodes)
+      EXPECT_EQ(std::string(why.what()).find("robot"), std::string::npos) << e.name << ": " << why.what();
+      continue;
+    }
+    ++engines;
+    const audit::body_reading first = run->read();
+    EXPECT_LE((first.joint_q - s.robot->q0).norm(), 16 * eps) << e.name;
+    EXPECT_LE((first.joint_v - s.robot->qdot0).norm(), 16 * eps * s.robot->qdot0.norm()) << e.name;
+    EXPECT_LE((audit::observe(s, first).observables - x0).norm(), 16 * eps * s.scale) << e.name;
+    run->step(h);
+    const Eigen::VectorXd after = audit::observe(s, run->read()).observables;
+    EXPECT_LE((after.head<3>() - x1.head<3>()).norm(), two_local_errors) << e.name;
+    std::printf("%s: the centre of mass after one step %.3g of h^2 (|g| + |kappa|) away\n", e.name.c_str(),
+                (after.head<3>() - x1.head<3>()).norm() / two_local_errors);
   }
   if (engines == 0) GTEST_SKIP() << "no engine of this build builds robots";
 }

@@ -66,6 +66,11 @@ expect 0 "audited [0-9]+ engine integrators" --engine '*' --engine-robots 1 --en
   --scenario 'robot_*' --engine-long-run-steps 100 -q -o "$work/robots"
 grep -q '<robot name="robot_1_0">' "$work/robots/robots/robot_1_0.urdf" ||
   { echo "FAILED: --engine-robots wrote no robots/robot_1_0.urdf"; failed=1; }
+# Random robots on a floating base: their URDF (a floating joint from "world") with the report.
+expect 0 "audited [0-9]+ engine integrators" --engine '*' --engine-floating-robots 1 --engine-robot-links 1 \
+  --scenario 'floating_*' --engine-long-run-steps 100 -q -o "$work/floating"
+grep -q 'type="floating"' "$work/floating/robots/floating_1_0.urdf" ||
+  { echo "FAILED: --engine-floating-robots wrote no floating robots/floating_1_0.urdf"; failed=1; }
 # Random free bodies: named by their seed, described in the report (principal axes turned,
 # the body angular velocity drawn).
 expect 0 "audited [0-9]+ engine integrators" --engine '*' --engine-bodies 2 --seed 3 --scenario 'body_*' \

@@ -244,7 +244,7 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   app.add_option("--robots", dynamics_robots, "with --dynamics: random robots (or states of --urdf robots; default 100)")
       ->check(CLI::Range(1, 1000000));
-  app.add_option("--seed", dynamics_seed, "the seed of the random robots, bodies and contact cases (--dynamics, --engine-robots, --engine-bodies, --contact-cases; default 1)");
+  app.add_option("--seed", dynamics_seed, "the seed of the random robots, bodies and contact cases (--dynamics, --engine-robots, --engine-floating-robots, --engine-bodies, --contact-cases; default 1)");
   std::vector<std::string> engine_scenarios, scenario_names;
   for (const auto& s : audit::scenarios()) scenario_names.push_back(s.name);
   for (const auto& s : audit::contact_scenarios()) scenario_names.push_back(s.name);
@@ -258,6 +258,12 @@ int main(int argc, char** argv) {
                  "with --engine-robots: at most this many links a robot (1 to 8, default 3; the reference's cost "
                  "grows with the square of the moving joints)")
       ->check(CLI::Range(1, 8));
+  int engine_floating_robots = 0;
+  app.add_option("--engine-floating-robots", engine_floating_robots,
+                 "with --engine: N random robots on a floating base (at most --engine-robot-links links, --seed) as "
+                 "scenarios named floating_<seed>_<k>, held to their centre of mass and momenta (Newton and Euler for "
+                 "the whole robot); each one's URDF is written to the report's robots/ folder")
+      ->check(CLI::Range(0, 1000));
   int engine_bodies = 0;
   app.add_option("--engine-bodies", engine_bodies,
                  "with --engine: N random free bodies (principal axes turned anywhere, spun about none of them; "
@@ -271,7 +277,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 100000));
   app.add_option("--scenario", engine_scenarios,
                  "engine scenarios, as shell patterns (default all; 'robot_*' the --engine-robots alone, "
-                 "'body_*' the --engine-bodies)");
+                 "'floating_*' the --engine-floating-robots, 'body_*' the --engine-bodies)");
   long long engine_long_run_steps = 100000;
   app.add_option("--engine-long-run-steps", engine_long_run_steps, "steps of the engines' long run (0: none)")
       ->check(CLI::Range(0LL, 100000000LL));
@@ -548,8 +554,9 @@ int main(int argc, char** argv) {
     std::erase_if(engines, [&](const audit::engine_integrator& e) { return !audit_tool::matches(engine_patterns, e.name); });
     std::vector<audit::engine_audit> engine_audits;
     // The random robots drawn once: every integrator shares their certified references.
-    const std::vector<audit::scenario> robots =
-        audit::random_robot_scenarios(engine_robots, dynamics_seed, engine_robot_links);
+    std::vector<audit::scenario> robots = audit::random_robot_scenarios(engine_robots, dynamics_seed, engine_robot_links);
+    for (auto& r : audit::random_floating_robot_scenarios(engine_floating_robots, dynamics_seed, engine_robot_links))
+      robots.push_back(std::move(r));
     std::vector<audit::scenario> drawn = robots;
     for (auto& b : audit::random_body_scenarios(engine_bodies, dynamics_seed)) drawn.push_back(std::move(b));
     // The scenarios' patterns as names: each must name one at least.

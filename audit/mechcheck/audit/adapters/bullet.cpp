@@ -377,11 +377,22 @@ class multibody_run final : public engine_run {
     }
     if (s_.structure == body_structure::robot) {  // the joints' coordinates in the robot's order
       const Eigen::Index n = Eigen::Index(coordinate_.size());
-      r.joint_q.resize(n);
-      r.joint_v.resize(n);
+      const bool floating = s_.robot->robot.floating;
+      const Eigen::Index bq = floating ? 7 : 0, bv = floating ? 6 : 0;
+      r.joint_q.resize(bq + n);
+      r.joint_v.resize(bv + n);
       for (Eigen::Index c = 0; c < n; ++c)
-        r.joint_q(c) = body_->getJointPos(coordinate_[std::size_t(c)]),
-        r.joint_v(c) = body_->getJointVel(coordinate_[std::size_t(c)]);
+        r.joint_q(bq + c) = body_->getJointPos(coordinate_[std::size_t(c)]),
+        r.joint_v(bv + c) = body_->getJointVel(coordinate_[std::size_t(c)]);
+      if (floating) {  // the root link's frame and body twist from the base's (build_robot)
+        const Eigen::Matrix3d turn = mat(btMatrix3x3(body_->getWorldToBaseRot().inverse())) * base_axes_.transpose();
+        const Eigen::Vector3d w = vec(body_->getBaseOmega()), arm = turn * base_com_;
+        const Eigen::Quaterniond unit(turn);
+        r.joint_q.head<3>() = vec(body_->getBasePos()) - arm;
+        r.joint_q.segment<4>(3) << unit.w(), unit.x(), unit.y(), unit.z();
+        r.joint_v.head<3>() = turn.transpose() * (vec(body_->getBaseVel()) - w.cross(arm));
+        r.joint_v.segment<3>(3) = turn.transpose() * w;
+      }
       return r;
     }
     if (s_.structure == body_structure::chain) {
@@ -510,15 +521,33 @@ class multibody_run final : public engine_run {
     coordinate_ = made.coordinate;
     body_->setCanSleep(false);
     world_->addMultiBody(body_.get());
+    const Eigen::Index bq = r.robot.floating ? 7 : 0, bv = r.robot.floating ? 6 : 0;
     for (std::size_t c = 0; c < coordinate_.size(); ++c) {
-      body_->setJointPos(coordinate_[c], r.q0(Eigen::Index(c)));
-      body_->setJointVel(coordinate_[c], r.qdot0(Eigen::Index(c)));
+      body_->setJointPos(coordinate_[c], r.q0(bq + Eigen::Index(c)));
+      body_->setJointVel(coordinate_[c], r.qdot0(bv + Eigen::Index(c)));
+    }
+    if (r.robot.floating) {
+      // The base's Bullet frame at the root's centre of mass c on its principal axes P (the
+      // dynamics adapter's): at p + R c turned by R P, moving at R (v_b + w_b x c), turning at R w_b.
+      base_com_ = made.base_com;
+      base_axes_ = made.base_axes;
+      const Eigen::Matrix3d turn = base_rotation(r.q0);
+      const Eigen::Vector3d v_b = r.qdot0.head<3>(), w_b = r.qdot0.segment<3>(3);
+      body_->setBasePos(bt(Eigen::Vector3d(r.q0.head<3>() + turn * base_com_)));
+      btQuaternion to_base;
+      transform_of(Eigen::Matrix3d((turn * base_axes_).transpose()), Eigen::Vector3d::Zero()).getBasis().getRotation(to_base);
+      body_->setWorldToBaseRot(to_base);
+      body_->setBaseVel(bt(Eigen::Vector3d(turn * (v_b + w_b.cross(base_com_)))));
+      body_->setBaseOmega(bt(Eigen::Vector3d(turn * w_b)));
     }
     body_->updateCollisionObjectWorldTransforms(scratch_q_, scratch_m_);
   }
 
   scenario s_;
   std::vector<int> coordinate_;  ///< a robot: per coordinate, its btMultiBody link
+  /// A floating robot: the base's Bullet frame in the root link's (robot_multibody).
+  Eigen::Vector3d base_com_ = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d base_axes_ = Eigen::Matrix3d::Identity();
   std::unique_ptr<btCollisionShape> shape_;
   std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;
   std::unique_ptr<btMultiBodyPoint2Point> loop_;

@@ -138,8 +138,17 @@ class run final : public engine_run {
       Eigen::VectorXd q(Eigen::Index(order_.order.size())), v(q.size());
       for (std::size_t i = 0; i < order_.order.size(); ++i)
         q(Eigen::Index(i)) = skeletons_[0]->getPosition(i), v(Eigen::Index(i)) = skeletons_[0]->getVelocity(i);
-      r.joint_q = order_.from_library(q);
       r.joint_v = order_.from_library(v);
+      if (!s_.robot->robot.floating) {
+        r.joint_q = order_.from_library(q);
+        return r;
+      }
+      // A floating base: the FreeJoint's pose as (p; quaternion w x y z), then the joints'.
+      const Eigen::VectorXd joints = order_.from_library(q);
+      const Eigen::Isometry3d pose = FreeJoint::convertToTransform(Eigen::Vector6d(q.head<6>()));
+      const Eigen::Quaterniond turn(pose.linear());
+      r.joint_q.resize(joints.size() + 1);
+      r.joint_q << pose.translation(), turn.w(), turn.x(), turn.y(), turn.z(), joints.tail(joints.size() - 6);
       return r;
     }
     if (s_.structure == body_structure::one_body) {
@@ -223,7 +232,19 @@ class run final : public engine_run {
   void build_robot(const robot_start& r) {
     world_->setGravity(r.robot.gravity);
     const SkeletonPtr skel = robot_skeleton(r.robot, order_);
-    const Eigen::VectorXd q = order_.to_library(r.q0), v = order_.to_library(r.qdot0);
+    Eigen::VectorXd q = r.q0;
+    if (r.robot.floating) {  // the FreeJoint's six positions from the base's pose (q's head)
+      Eigen::VectorXd padded = Eigen::VectorXd::Zero(r.qdot0.size());
+      padded.tail(padded.size() - 6) = r.q0.tail(padded.size() - 6);
+      q = order_.to_library(padded);
+      Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+      pose.linear() = base_rotation(r.q0);
+      pose.translation() = r.q0.head<3>();
+      q.head<6>() = FreeJoint::convertToPositions(pose);
+    } else {
+      q = order_.to_library(r.q0);
+    }
+    const Eigen::VectorXd v = order_.to_library(r.qdot0);
     for (std::size_t i = 0; i < order_.order.size(); ++i)
       skel->setPosition(i, q(Eigen::Index(i))), skel->setVelocity(i, v(Eigen::Index(i)));
     add(skel);

@@ -375,10 +375,18 @@ class run final : public engine_run {
     body_reading r;
     if (s_.structure == body_structure::robot) {  // the robot's coordinates from MuJoCo's joints
       const Eigen::Index n = static_cast<Eigen::Index>(qpos_of_.size());
-      r.joint_q.resize(n);
-      r.joint_v.resize(n);
+      const int bq = base_q(), bv = base_v();
+      r.joint_q.resize(bq + n);
+      r.joint_v.resize(bv + n);
       for (Eigen::Index i = 0; i < n; ++i)
-        r.joint_q(i) = data_->qpos[qpos_of_[std::size_t(i)]], r.joint_v(i) = data_->qvel[dof_of_[std::size_t(i)]];
+        r.joint_q(bq + i) = data_->qpos[qpos_of_[std::size_t(i)]], r.joint_v(bv + i) = data_->qvel[dof_of_[std::size_t(i)]];
+      if (bq > 0) {  // the freejoint's state in the start's layout (start_robot)
+        for (int i = 0; i < 7; ++i) r.joint_q(i) = data_->qpos[free_qpos_ + i];
+        const Eigen::Vector3d v = base_rotation(r.joint_q).transpose() *
+                                  Eigen::Map<const Eigen::Vector3d>(data_->qvel + free_dof_);
+        r.joint_v.head(3) = v;
+        for (int i = 0; i < 3; ++i) r.joint_v(3 + i) = data_->qvel[free_dof_ + 3 + i];
+      }
       return r;
     }
     if (s_.structure != body_structure::one_body) {
@@ -453,16 +461,31 @@ class run final : public engine_run {
       if (id < 0) throw error(name_ + ": the model has no joint " + r.robot.joints[j].name);
       qpos_of_[std::size_t(c)] = model_->jnt_qposadr[id];
       dof_of_[std::size_t(c)] = model_->jnt_dofadr[id];
-      data_->qpos[model_->jnt_qposadr[id]] = r.q0(c);
-      data_->qvel[model_->jnt_dofadr[id]] = r.qdot0(c);
+      data_->qpos[model_->jnt_qposadr[id]] = r.q0(base_q() + c);
+      data_->qvel[model_->jnt_dofadr[id]] = r.qdot0(base_v() + c);
+    }
+    if (r.robot.floating) {
+      // The freejoint (robot_mjcf): qpos the base's position and quaternion w x y z as the
+      // start's; qvel the base's linear velocity in the world, R v_b, then w_b in the body.
+      const std::string free = r.robot.links[std::size_t(t.root)].name + "_free";
+      const int id = mj_name2id(model_, mjOBJ_JOINT, free.c_str());
+      if (id < 0) throw error(name_ + ": the model has no joint " + free);
+      free_qpos_ = model_->jnt_qposadr[id];
+      free_dof_ = model_->jnt_dofadr[id];
+      for (int i = 0; i < 7; ++i) data_->qpos[free_qpos_ + i] = r.q0(i);
+      const Eigen::Vector3d v = base_rotation(r.q0) * r.qdot0.head(3);
+      for (int i = 0; i < 3; ++i) data_->qvel[free_dof_ + i] = v(i), data_->qvel[free_dof_ + 3 + i] = r.qdot0(3 + i);
     }
     mj_forward(model_, data_);
   }
+  int base_q() const { return s_.robot->robot.floating ? 7 : 0; }
+  int base_v() const { return s_.robot->robot.floating ? 6 : 0; }
 
   scenario s_;
   std::string name_;
   bool dexp_ = false;
   std::vector<int> qpos_of_, dof_of_;  ///< a robot's coordinates: their qpos and dof addresses
+  int free_qpos_ = 0, free_dof_ = 0;     ///< a floating robot's freejoint: its qpos and dof addresses
   mjModel* model_ = nullptr;
   mjData* data_ = nullptr;
   long long steps_ = 0;

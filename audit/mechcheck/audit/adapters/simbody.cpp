@@ -14,6 +14,12 @@
 namespace mechcheck::audit::simbody {
 
 namespace {
+/// Simbody's Free mobilizer from the ground: its u are the angular velocity, then the linear
+/// one, both in the ground's frame (MobilizedBody_Free.h), as the dynamics adapter reads them.
+constexpr base_convention free_velocity{true, true, true};
+}  // namespace
+
+namespace {
 namespace bridge = simbody_bridge;
 
 struct declared {
@@ -171,7 +177,19 @@ class run final : public engine_run {
     if (s.structure == body_structure::robot) {  // the robot as the dynamics audit builds it
       b.structure = 3;
       b.robot = setup_of(s.robot->robot, robots::validate(s.robot->robot), coordinates_);
-      const Eigen::VectorXd q = coordinates_.to_library(s.robot->q0), u = coordinates_.to_library(s.robot->qdot0);
+      const robot_start& r = *s.robot;
+      Eigen::VectorXd q, u;
+      if (r.robot.floating) {  // the Free root's pose as it is, its velocity Simbody's (free_velocity)
+        const Eigen::Index n = r.qdot0.size() - 6;
+        const Eigen::VectorXd lib = base_map(free_velocity, base_rotation(r.q0), r.qdot0).to_library(r.qdot0);
+        q.resize(n + 7);
+        u.resize(n + 6);
+        q << r.q0.head<7>(), coordinates_.to_library(Eigen::VectorXd(r.q0.tail(n)));
+        u << lib.head<6>(), coordinates_.to_library(Eigen::VectorXd(lib.tail(n)));
+      } else {
+        q = coordinates_.to_library(r.q0);
+        u = coordinates_.to_library(r.qdot0);
+      }
       b.q0.assign(q.data(), q.data() + q.size());
       b.u0.assign(u.data(), u.data() + u.size());
     }
@@ -215,9 +233,18 @@ class run final : public engine_run {
       o.joint_q = Eigen::Map<const Eigen::VectorXd>(r.joint_q.data(), Eigen::Index(r.joint_q.size()));
       o.joint_v = Eigen::Map<const Eigen::VectorXd>(r.joint_u.data(), Eigen::Index(r.joint_u.size()));
       if (s_.structure == body_structure::robot) {  // the robot's coordinates from the bridge's order
-        o.joint_q = coordinates_.from_library(o.joint_q);
-        o.joint_v = coordinates_.from_library(o.joint_v);
         o.links.clear();
+        if (!s_.robot->robot.floating) {
+          o.joint_q = coordinates_.from_library(o.joint_q);
+          o.joint_v = coordinates_.from_library(o.joint_v);
+          return o;
+        }
+        const Eigen::Index n = o.joint_v.size() - 6;
+        Eigen::VectorXd q(n + 7), lib(n + 6);
+        q << o.joint_q.head<7>(), coordinates_.from_library(Eigen::VectorXd(o.joint_q.tail(n)));
+        lib << o.joint_v.head<6>(), coordinates_.from_library(Eigen::VectorXd(o.joint_v.tail(n)));
+        o.joint_q = q;
+        o.joint_v = base_map(free_velocity, base_rotation(q), Eigen::VectorXd::Zero(n + 6)).from_library(lib);  // velocities: no turn
         return o;
       }
     }

@@ -179,6 +179,17 @@ Eigen::Matrix3d base_rotation(const Eigen::VectorXd& q) {
   return Eigen::Quaterniond(q(3), q(4), q(5), q(6)).normalized().toRotationMatrix();
 }
 
+template <class T>
+robots::base_pose<T> floating_base_pose(const Eigen::VectorXd& q) {
+  if (q.size() < 7) throw dimension_error("floating_base_pose: q has " + std::to_string(q.size()) + " components, fewer than the base's 7");
+  require_finite_vector(q, "floating_base_pose", "q");
+  const Eigen::Quaternion<T> r(T(q(3)), T(q(4)), T(q(5)), T(q(6)));
+  if (!(r.squaredNorm() > 0)) throw domain_error("floating_base_pose: the base's quaternion is zero");
+  return {r.normalized().toRotationMatrix(), vector3<T>(T(q(0)), T(q(1)), T(q(2)))};
+}
+template robots::base_pose<double> floating_base_pose<double>(const Eigen::VectorXd&);
+template robots::base_pose<mpfr50> floating_base_pose<mpfr50>(const Eigen::VectorXd&);
+
 std::string unset_joint_terms(const robots::robot& robot, const std::string& library, bool sets_armature,
                               bool sets_damping, const std::string& why) {
   for (const robots::joint& j : robot.joints) {
@@ -192,18 +203,6 @@ std::string unset_joint_terms(const robots::robot& robot, const std::string& lib
   return {};
 }
 
-namespace {
-/// A floating robot's base pose from q's head (dynamics_state), the quaternion normalized in
-/// mpfr50.
-robots::base_pose<mpfr50> floating_base_pose(const Eigen::VectorXd& q) {
-  if (q.size() < 7) throw dimension_error("floating_base_pose: q has " + std::to_string(q.size()) + " components, fewer than the base's 7");
-  require_finite_vector(q, "floating_base_pose", "q");
-  const Eigen::Quaternion<mpfr50> r(mpfr50(q(3)), mpfr50(q(4)), mpfr50(q(5)), mpfr50(q(6)));
-  if (!(r.squaredNorm() > 0)) throw domain_error("floating_base_pose: the base's quaternion is zero");
-  return {r.normalized().toRotationMatrix(), vector3<mpfr50>(mpfr50(q(0)), mpfr50(q(1)), mpfr50(q(2)))};
-}
-
-}  // namespace
 
 kinematic_reference kinematic_reference_at(const robots::robot& robot, const dynamics_state& x, bool with_bias) {
   const robots::robot_model<mpfr50> m(robot);
@@ -214,7 +213,7 @@ kinematic_reference kinematic_reference_at(const robots::robot& robot, const dyn
   const Eigen::VectorXd joints = x.q.tail(n);
   const dynamic_vector<mpfr50> q = widened<mpfr50>(joints);
   std::optional<robots::base_pose<mpfr50>> b;
-  if (robot.floating) b = floating_base_pose(x.q);
+  if (robot.floating) b = floating_base_pose<mpfr50>(x.q);
   const auto states = [&](const dynamic_vector<mpfr50>& u) {
     if (!b) return robots::link_states(m, q, u);
     return robots::link_states(m, q, dynamic_vector<mpfr50>(u.tail(n)), robots::detail::floating_root(*b, u));
@@ -424,7 +423,7 @@ reference_terms reference_terms_at(const robots::robot& robot, const dynamics_st
   reference_terms out;
   dynamic_vector<mpfr50> gravity_terms;
   if (robot.floating) {
-    const robots::base_pose<mpfr50> b = floating_base_pose(x.q);
+    const robots::base_pose<mpfr50> b = floating_base_pose<mpfr50>(x.q);
     out.mass = robots::floating_recursive_mass_matrix(m, b, q);
     out.bias = robots::floating_recursive_bias(m, b, q, qdot);
     gravity_terms = robots::floating_recursive_bias(m, b, q, rest);

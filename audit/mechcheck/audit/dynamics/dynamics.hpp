@@ -36,6 +36,11 @@
 #include "mechcheck/harness/generators.hpp"
 #include "mechcheck/robots/robot.hpp"
 
+namespace mechcheck::robots {
+template <class T>
+struct base_pose;
+}  // namespace mechcheck::robots
+
 namespace mechcheck::audit {
 
 /// A library that cannot express a robot (a joint type, a tree where it takes chains).
@@ -243,6 +248,12 @@ class base_map {
 /// The base's rotation of a floating robot's q (dynamics_state's layout), the quaternion
 /// normalized in double, as a library given q is.
 Eigen::Matrix3d base_rotation(const Eigen::VectorXd& q);
+
+/// A floating robot's base pose from q's head (dynamics_state's layout), the quaternion
+/// normalized in T, double or mpfr50 (dimension_error for q without the base's 7,
+/// non_finite_error, and domain_error for a zero quaternion).
+template <class T>
+robots::base_pose<T> floating_base_pose(const Eigen::VectorXd& q);
 
 /// A robot's state for every quantity. On a fixed base: q, qdot, qddot and tau of its moving
 /// joints. On a floating base (robots::robot::floating; robots/floating.hpp), MuJoCo's

@@ -10,9 +10,11 @@
 #include <Eigen/Geometry>
 
 #include "mechcheck/audit/audit.hpp"
+#include "mechcheck/audit/dynamics/dynamics.hpp"
 #include "mechcheck/audit/finite_differences.hpp"
 #include "mechcheck/audit/studies.hpp"
 #include "mechcheck/robots/dynamics.hpp"
+#include "mechcheck/robots/floating.hpp"
 
 namespace mechcheck::audit {
 namespace {
@@ -99,14 +101,25 @@ engine_observation observe_multibody(const scenario& s, const body_reading& r) {
 
 /// A robot's observation: its joint coordinates (angles reduced to [-pi, pi]) and rates as
 /// the engine reports them, and its energy there; no momentum law, no constraint to
-/// measure (the engine integrates in the joint coordinates).
+/// measure (the engine integrates in the joint coordinates). On a floating base: its centre
+/// of mass and momenta at the engine's state (robot_start::momenta), the angular momentum
+/// about the centre of mass the long run's.
 engine_observation observe_robot(const scenario& s, const body_reading& r) {
   const robot_start& start = *s.robot;
-  const Eigen::Index n = start.q0.size();
-  if (r.joint_q.size() != n || r.joint_v.size() != n)
-    throw dimension_error("observe: " + s.name + " has " + std::to_string(n) + " coordinates, the engine read " +
-                          std::to_string(r.joint_q.size()) + " and " + std::to_string(r.joint_v.size()) + " rates");
+  const Eigen::Index n = start.q0.size(), nv = start.qdot0.size();
+  if (r.joint_q.size() != n || r.joint_v.size() != nv)
+    throw dimension_error("observe: " + s.name + " has " + std::to_string(n) + " coordinates and " + std::to_string(nv) +
+                          " velocities, the engine read " + std::to_string(r.joint_q.size()) + " and " +
+                          std::to_string(r.joint_v.size()));
   engine_observation o;
+  if (start.momenta) {
+    if (!r.joint_q.allFinite() || !r.joint_v.allFinite()) throw non_finite_error("observe: " + s.name + ": the engine's state is not finite");
+    o.observables = start.momenta(r.joint_q, r.joint_v);
+    o.momentum = o.observables.tail(3);
+    o.energy = start.energy(r.joint_q, r.joint_v);
+    o.readout = "the engine's base pose and twist and joint coordinates";
+    return o;
+  }
   o.observables.resize(2 * n);
   for (Eigen::Index i = 0; i < n; ++i) {
     o.observables(i) = start.angular[std::size_t(i)] ? wrap_angle(r.joint_q(i)) : r.joint_q(i);
@@ -421,8 +434,12 @@ scenario as_held(const engine_integrator& in, const scenario& s, std::string& he
   start->robot = given.robot;
   h.robot = start;
   const robots::robot_model<double> m_given(given.robot), m_held(*r);
-  const Eigen::MatrixXd a = robots::robot_hamiltonian<double>{&m_given}.mass_matrix<double>(given.q0),
-                        b = robots::robot_hamiltonian<double>{&m_held}.mass_matrix<double>(given.q0);
+  const auto mass_at_start = [&given](const robots::robot_model<double>& m) -> Eigen::MatrixXd {
+    if (!given.robot.floating) return robots::robot_hamiltonian<double>{&m}.mass_matrix<double>(given.q0);
+    return robots::floating_recursive_mass_matrix(m, floating_base_pose<double>(given.q0),
+                                                  Eigen::VectorXd(given.q0.tail(given.q0.size() - 7)));
+  };
+  const Eigen::MatrixXd a = mass_at_start(m_given), b = mass_at_start(m_held);
   char buf[200];
   std::snprintf(buf, sizeof buf,
                 "measured against the robot the engine holds (its mass matrix at the start %.2g of the given "

@@ -75,12 +75,21 @@ struct loop_closure {
 /// slides of prismatic ones, and their rates. An engine builds the tree from `robot` (its
 /// links' inertia tensors in any frame, axes in any direction) and reports its joint
 /// coordinates and rates in that order (body_reading::joint_q, joint_v).
+///
+/// A robot on a floating base (robots::robot::floating) starts, and is reported, in the
+/// dynamics audit's layout (dynamics_state): q = (p; quaternion w x y z; the joints' q), the
+/// root link's frame in the world, and qdot = u = (v_b; w_b; the joints' qdot), the base's
+/// twist in its own frame. An engine maps them to its own base coordinates, as its dynamics
+/// adapter does.
 struct robot_start {
   robots::robot robot;
   Eigen::VectorXd q0, qdot0;
-  std::vector<bool> angular;  ///< per coordinate: an angle (compared modulo 2 pi)
+  std::vector<bool> angular;  ///< per joint coordinate: an angle (compared modulo 2 pi)
   /// T + V at a state, in double (robots/dynamics.hpp): the observation's energy.
   std::function<double(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot)> energy;
+  /// A floating base: the observables at a state, in double: the centre of mass c, the
+  /// linear momentum P and the angular momentum about the centre of mass L_G (9 numbers).
+  std::function<Eigen::VectorXd(const Eigen::VectorXd& q, const Eigen::VectorXd& u)> momenta;
 };
 
 /// How the scenario's body is held.
@@ -157,12 +166,34 @@ std::vector<scenario> scenarios();
 scenario robot_scenario(std::string name, const robots::robot& r, const Eigen::VectorXd& q0,
                         const Eigen::VectorXd& qdot0, double t_end = 1);
 
+/// A robot on a floating base (robot.floating) is observed by what it keeps whatever its
+/// joints do: its centre of mass c(t) = c0 + cdot0 t + g t^2 / 2 (class "centre of mass"),
+/// its linear momentum P(t) = P0 + m g t ("linear momentum") and its angular momentum about
+/// the centre of mass L_G(t) = L_G0 ("angular momentum"): by Newton and Euler for the whole
+/// robot, uniform gravity acts at c and the joints' forces are internal (notes eqs 79-83).
+/// The reference is exact, computed in mpfr50 from the start (robots/floating.hpp), with no
+/// certification; its joint coordinates are not observed (they have no reference here). The
+/// long run's energy is T + V, its momentum L_G. The start is q0 = (p; quaternion w x y z;
+/// the joints' q) and qdot0 = u = (v_b; w_b; the joints' qdot) (robot_start); the scale is
+/// the largest of 1 and the observables' terms over the run (|c0| + |cdot0| t_end + |g|
+/// t_end^2 / 2, the links' sum m_i |v_i| + m |g| t_end, and sum m_i |x_i - c| |v_i| + |I_i
+/// w_i|).
+
 /// `count` random robots (generators::random_robots: 1 to max_links links, chains and
 /// trees, revolute, continuous, prismatic and fixed joints, axes in any direction, rotated
 /// inertias) as scenarios named robot_<seed>_<k>, each released at a random start (angles
 /// in [-pi, pi], slides in [-1, 1], rates in [-2, 2]); the same seed gives the same robots.
 /// A drawn robot without a moving joint gets its first joint revolute.
 std::vector<scenario> random_robot_scenarios(int count, std::uint64_t seed, int max_links = 3);
+
+/// `count` random robots on a floating base as scenarios named floating_<seed>_<k>: the
+/// dynamics campaign's floating robots (generators::floating_robot_cases over robot_cases of
+/// at most max_links links; the base's pose in [-1, 1]^3 and roll, pitch, yaw in [-3.14,
+/// 3.14], its twist in [-4, 4] a component; robot_cases' joints: angles in [-3.14, 3.14],
+/// slides in [-1, 1], rates up to 16),
+/// under their own gravity, the base's quaternion rounded to double. The same seed gives
+/// the same robots, robot k the same whatever the count.
+std::vector<scenario> random_floating_robot_scenarios(int count, std::uint64_t seed, int max_links = 3);
 
 /// A free body of mass `mass` and principal moments I1 < I2 < I3 < I1 + I2 (`inertia`)
 /// along the columns of rotation0 (its principal axes in the world), its centre of mass at

@@ -120,6 +120,7 @@ struct model::impl {
   MobilizedBody body;
   std::vector<MobilizedBody> links;
   bool chain = false;
+  bool free_root = false;  ///< a robot on a Free root (its first mobilizer)
   State state;
   std::unique_ptr<Integrator> integrator;
   bool started = false;
@@ -236,9 +237,20 @@ model::model(const setup& s) : p_(new impl) {
     m.chain = true;
     m.state = m.system.realizeTopology();
     m.system.realizeModel(m.state);
+    m.free_root = !s.robot.bodies.empty() && s.robot.bodies.front().joint == 3;
+    const std::size_t fq = m.free_root ? 6 : 0, fu = m.free_root ? 5 : 0;  // a Free root's extra q and u
+    if (s.q0.size() != m.links.size() + fq || s.u0.size() != m.links.size() + fu)
+      throw std::invalid_argument("the robot's start has " + std::to_string(s.q0.size()) + " q and " +
+                                  std::to_string(s.u0.size()) + " u for " + std::to_string(m.links.size()) + " mobilizers");
     for (std::size_t k = 0; k < m.links.size(); ++k) {
-      m.links[k].setOneQ(m.state, 0, s.q0.at(k));
-      m.links[k].setOneU(m.state, 0, s.u0.at(k));
+      if (m.free_root && k == 0) {
+        const Rotation turn(Quaternion(s.q0[3], s.q0[4], s.q0[5], s.q0[6]));
+        m.links[0].setQToFitTransform(m.state, Transform(turn, Vec3(s.q0[0], s.q0[1], s.q0[2])));
+        m.links[0].setUToFitVelocity(m.state, SpatialVec(Vec3(s.u0[0], s.u0[1], s.u0[2]), Vec3(s.u0[3], s.u0[4], s.u0[5])));
+        continue;
+      }
+      m.links[k].setOneQ(m.state, 0, s.q0[k + fq]);
+      m.links[k].setOneU(m.state, 0, s.u0[k + fu]);
     }
     m.system.realize(m.state, Stage::Velocity);
   } else if (s.structure == 4) {
@@ -343,7 +355,20 @@ reading model::read() const {
     }
     for (const MobilizedBody& b : m.links) r.links.push_back(frame_of(b, *at));
     if (m.chain)
-      for (const MobilizedBody& b : m.links) r.joint_q.push_back(b.getOneQ(*at, 0)), r.joint_u.push_back(b.getOneU(*at, 0));
+      for (std::size_t k = 0; k < m.links.size(); ++k) {
+        const MobilizedBody& b = m.links[k];
+        if (m.free_root && k == 0) {  // the Free root's pose and velocity in the ground
+          const Transform& x = b.getBodyTransform(*at);
+          const Vec4 turn = x.R().convertRotationToQuaternion().asVec4();
+          for (int i = 0; i < 3; ++i) r.joint_q.push_back(x.p()[i]);
+          for (int i = 0; i < 4; ++i) r.joint_q.push_back(turn[i]);
+          const SpatialVec& v = b.getBodyVelocity(*at);
+          for (int i = 0; i < 3; ++i) r.joint_u.push_back(v[0][i]);
+          for (int i = 0; i < 3; ++i) r.joint_u.push_back(v[1][i]);
+          continue;
+        }
+        r.joint_q.push_back(b.getOneQ(*at, 0)), r.joint_u.push_back(b.getOneU(*at, 0));
+      }
     return r;
   }
   const Rotation& rot = m.body.getBodyRotation(st);

@@ -65,7 +65,10 @@ struct setup {
   double loop_point[3] = {0, 0, 0}, loop_anchor[3] = {0, 0, 0};
   double gravitation = 0;
   /// structure 3: a robot (its gravity its own), started at q0 and u0 (qdot) in the order of
-  /// its moving bodies; read back as joint_q and joint_u in that order.
+  /// its moving bodies; read back as joint_q and joint_u in that order. A Free root (robot's
+  /// first body, joint 3) takes seven q, its origin and quaternion w x y z (setQToFitTransform),
+  /// and six u, its angular velocity and its origin's velocity in the ground (Simbody's own
+  /// u of a Free mobilizer from the ground; setUToFitVelocity), and is read back alike.
   robot_setup robot;
   std::vector<double> q0, u0;
   /// structure 4: bodies on a half-space ground and against each other under Simbody's
