@@ -516,4 +516,34 @@ TEST(robots, urdf_round_trips_every_number_and_refuses_what_is_not_urdf) {
       "test.urdf"));
 }
 
+TEST(robots, a_pose_held_as_a_quaternion_is_that_rotation_in_every_tier_where_roll_pitch_yaw_loses_digits) {
+  // A rotation 2^-20 rad short of pitch pi/2: roll and yaw are nearly one angle there, and
+  // rpy_of's atan2 of the small third row loses about 2^20 of eps (the round trip's error).
+  const Eigen::Quaterniond turn =
+      Eigen::AngleAxisd(0.75, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(M_PI / 2 - 0x1p-20, Eigen::Vector3d::UnitY()) *
+      Eigen::AngleAxisd(-0.5, Eigen::Vector3d::UnitX());
+  rb::pose p;
+  p.quaternion = Eigen::Vector4d(turn.w(), turn.x(), turn.y(), turn.z()) * 4;  // normalized where used
+  p.rpy = {1, 2, 3};  // not read
+  const Eigen::Quaternion<mpfr50> exact(mpfr50(turn.w()), mpfr50(turn.x()), mpfr50(turn.y()), mpfr50(turn.z()));
+  const matrix3<mpfr50> reference = exact.normalized().toRotationMatrix();
+  const auto off = [&](const Eigen::Matrix3d& r) { return static_cast<double>((r.cast<mpfr50>() - reference).norm()); };
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  EXPECT_LE(off(rb::pose_rotation<double>(p)), 4 * eps);
+  EXPECT_LE(static_cast<double>((rb::pose_rotation<mpfr50>(p) - reference).norm()), 1e-45);
+  const double round_trip = off(rb::rpy_rotation<double>(rb::rpy_of(rb::pose_rotation<double>(p))));
+  EXPECT_GE(round_trip, 1024 * eps) << "the roll-pitch-yaw round trip kept its digits";
+  std::printf("a rotation 2^-20 short of pitch pi/2: %.3g eps as a quaternion, %.3g eps through roll-pitch-yaw\n",
+              off(rb::pose_rotation<double>(p)) / eps, round_trip / eps);
+  // Without a quaternion, the pose is its roll-pitch-yaw; a zero or non-finite quaternion on a
+  // joint is the description's error, named.
+  p.quaternion.reset();
+  EXPECT_EQ(rb::pose_rotation<double>(p), rb::rpy_rotation<double>(p.rpy));
+  rb::robot r = two_link_arm(1, 2, 1, 0.5, 0.25, 0.125, 0.0625);
+  r.joints[0].origin.quaternion = Eigen::Vector4d::Zero();
+  EXPECT_THROW(rb::validate(r), non_finite_error);
+  r.joints[0].origin.quaternion = Eigen::Vector4d(1, NAN, 0, 0);
+  EXPECT_THROW(rb::validate(r), non_finite_error);
+}
+
 }  // namespace robots_test

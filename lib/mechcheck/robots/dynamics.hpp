@@ -22,6 +22,7 @@
 #include <vector>
 
 #include <Eigen/Cholesky>
+#include <Eigen/Geometry>
 
 #include "mechcheck/lagrangian/lagrangian.hpp"
 #include "mechcheck/robots/robot.hpp"
@@ -43,6 +44,24 @@ matrix3<T> rpy_rotation(const Eigen::Vector3d& rpy) {
   return rz * yx;
 }
 
+/// The rotation of a pose in T: its quaternion normalized in T where it has one, else its
+/// roll-pitch-yaw.
+template <class T>
+matrix3<T> pose_rotation(const pose& p) {
+  if (!p.quaternion) return rpy_rotation<T>(p.rpy);
+  const Eigen::Vector4d& q = *p.quaternion;
+  return Eigen::Quaternion<T>(T(q(0)), T(q(1)), T(q(2)), T(q(3))).normalized().toRotationMatrix();
+}
+
+/// Roll, pitch and yaw of a rotation, R = Rz(yaw) Ry(pitch) Rx(roll) (URDF's convention).
+/// At pitch = +-pi/2 only yaw - roll (or yaw + roll) is defined: roll 0 and yaw from the
+/// first two rows' second column.
+inline Eigen::Vector3d rpy_of(const Eigen::Matrix3d& r) {
+  const double c = std::hypot(r(2, 1), r(2, 2)), pitch = std::atan2(-r(2, 0), c);
+  if (c == 0) return {0, pitch, std::atan2(-r(0, 1), r(1, 1))};
+  return {std::atan2(r(2, 1), r(2, 2)), pitch, std::atan2(r(1, 0), r(0, 0))};
+}
+
 /// A robot's numbers in tier T: per joint its origin (rotation and translation) and axis,
 /// per link its mass, centre of mass and inertia tensor about it in the link's frame
 /// (R_o I R_o^T, notes eq 142, with R_o its inertial origin's rotation).
@@ -61,7 +80,7 @@ struct robot_model {
   /// Validates the description (robot_error, non_finite_error: see validate()).
   explicit robot_model(robot r) : description(std::move(r)), tree(validate(description)) {
     for (const joint& j : description.joints) {
-      origin_rotation.push_back(rpy_rotation<T>(j.origin.rpy));
+      origin_rotation.push_back(pose_rotation<T>(j.origin));
       origin_translation.push_back(j.origin.xyz.cast<T>());
       // URDF's axis is a unit vector: normalized in T (validate() allows 1e-9 off).
       using std::sqrt;
@@ -82,7 +101,7 @@ struct robot_model {
       }
       mass.push_back(T(l.body->mass));
       com.push_back(l.body->origin.xyz.cast<T>());
-      const matrix3<T> ro = rpy_rotation<T>(l.body->origin.rpy);
+      const matrix3<T> ro = pose_rotation<T>(l.body->origin);
       // Its symmetric part: validate() lets a tensor be 64 eps off symmetric (a library's
       // compiled inertia read back), which T = w^T I w / 2 does not see and Euler's
       // I alpha + w x I w (robots/recursive.hpp) would.
@@ -269,7 +288,7 @@ struct base_pose {
 template <class T>
 base_pose<T> base_pose_from(const pose& p) {
   detail::require_finite_pose(p, "base_pose_from");
-  return {rpy_rotation<T>(p.rpy), p.xyz.cast<T>()};
+  return {pose_rotation<T>(p), p.xyz.cast<T>()};
 }
 
 namespace detail {

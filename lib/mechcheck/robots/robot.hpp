@@ -34,10 +34,14 @@ class robot_error : public domain_error {
   using domain_error::domain_error;
 };
 
-/// Translation (m) and roll-pitch-yaw (rad) of a frame in its parent frame.
+/// Translation (m) and roll-pitch-yaw (rad) of a frame in its parent frame. A rotation a
+/// library holds as a quaternion (MuJoCo's body_quat) is kept as one, w x y z, normalized
+/// where used (pose_rotation, robots/dynamics.hpp): roll-pitch-yaw would round it again, and
+/// near pitch +-pi/2 lose digits; rpy then says the same rotation for URDF alone.
 struct pose {
   Eigen::Vector3d xyz{0, 0, 0};
   Eigen::Vector3d rpy{0, 0, 0};
+  std::optional<Eigen::Vector4d> quaternion;  ///< w x y z; where set, the rotation (rpy is not read)
 };
 
 /// A link's mass (kg), its centre of mass and inertia frame (origin), and its inertia
@@ -121,6 +125,10 @@ inline void require_finite_pose(const pose& p, const std::string& where) {
     if (!std::isfinite(p.xyz(i))) throw non_finite_error(where + ": origin xyz " + vector_text(p.xyz) + " is not finite");
     if (!std::isfinite(p.rpy(i))) throw non_finite_error(where + ": origin rpy " + vector_text(p.rpy) + " is not finite");
   }
+  if (p.quaternion && !(p.quaternion->allFinite() && p.quaternion->squaredNorm() > 0))
+    throw non_finite_error(where + ": origin quaternion (" + to_text((*p.quaternion)(0)) + ", " + to_text((*p.quaternion)(1)) +
+                           ", " + to_text((*p.quaternion)(2)) + ", " + to_text((*p.quaternion)(3)) +
+                           ") is not a finite rotation");
 }
 }  // namespace detail
 

@@ -39,7 +39,7 @@ struct principal {
 principal principal_of(const robots::link& l) {
   principal p;
   if (!l.body) return p;
-  const Eigen::Matrix3d ro = robots::rpy_rotation<double>(l.body->origin.rpy);
+  const Eigen::Matrix3d ro = robots::pose_rotation<double>(l.body->origin);
   const Eigen::Matrix3d i = ro * l.body->inertia * ro.transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(Eigen::Matrix3d((i + i.transpose()) / 2));
   p.mass = l.body->mass;
@@ -76,7 +76,7 @@ robot_multibody build_robot_multibody(const robots::robot& r) {
     const int parent_link = t.parent_link[std::size_t(k)], child_link = t.child_link[std::size_t(k)];
     const principal& parent = frame[std::size_t(parent_link)];
     const principal& child = frame[std::size_t(child_link)];
-    const Eigen::Matrix3d origin = robots::rpy_rotation<double>(j.origin.rpy);
+    const Eigen::Matrix3d origin = robots::pose_rotation<double>(j.origin);
     // Points in the parent's Bullet frame to this one's: P_child^T R_origin^T P_parent.
     const btQuaternion parent_to_this = quaternion(child.axes.transpose() * origin.transpose() * parent.axes);
     // From the parent's centre of mass to the joint (the child's origin), in the parent's

@@ -27,7 +27,7 @@ using namespace dart::dynamics;
 
 Eigen::Isometry3d isometry(const robots::pose& p) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  t.linear() = robots::rpy_rotation<double>(p.rpy);
+  t.linear() = robots::pose_rotation<double>(p);
   t.translation() = p.xyz;
   return t;
 }
@@ -38,7 +38,7 @@ Eigen::Isometry3d isometry(const robots::pose& p) {
 /// see dart_model).
 Inertia inertia_of(const robots::link& l) {
   if (!l.body) return Inertia(0, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero());
-  const Eigen::Matrix3d ro = robots::rpy_rotation<double>(l.body->origin.rpy);
+  const Eigen::Matrix3d ro = robots::pose_rotation<double>(l.body->origin);
   return Inertia(l.body->mass, l.body->origin.xyz, ro * l.body->inertia * ro.transpose());
 }
 

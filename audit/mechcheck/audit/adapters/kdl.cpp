@@ -26,7 +26,13 @@ namespace mechcheck::audit {
 namespace {
 KDL::Vector vec(const Eigen::Vector3d& v) { return KDL::Vector(v(0), v(1), v(2)); }
 
+/// A pose as KDL's frame: its roll-pitch-yaw (KDL::Rotation::RPY, URDF's convention), or
+/// its quaternion where it has one (KDL::Rotation::Quaternion takes x y z w).
 KDL::Frame frame(const robots::pose& p) {
+  if (p.quaternion) {
+    const Eigen::Vector4d q = p.quaternion->normalized();
+    return KDL::Frame(KDL::Rotation::Quaternion(q(1), q(2), q(3), q(0)), vec(p.xyz));
+  }
   return KDL::Frame(KDL::Rotation::RPY(p.rpy(0), p.rpy(1), p.rpy(2)), vec(p.xyz));
 }
 

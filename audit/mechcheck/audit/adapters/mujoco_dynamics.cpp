@@ -33,7 +33,7 @@ std::string nums(const double* x, int n) {
 /// mass: fullinertia); nothing for a massless link.
 void inertial_xml(const robots::link& l, std::string& out) {
   if (!l.body) return;
-  const Eigen::Matrix3d ro = robots::rpy_rotation<double>(l.body->origin.rpy);
+  const Eigen::Matrix3d ro = robots::pose_rotation<double>(l.body->origin);
   const Eigen::Matrix3d i = ro * l.body->inertia * ro.transpose();
   const double full[6] = {i(0, 0), i(1, 1), i(2, 2), (i(0, 1) + i(1, 0)) / 2, (i(0, 2) + i(2, 0)) / 2,
                           (i(1, 2) + i(2, 1)) / 2};
@@ -49,7 +49,7 @@ void body_xml(const robots::robot& r, const robots::tree& t, int link, int joint
   const robots::link& l = r.links[std::size_t(link)];
   if (joint >= 0) {
     const robots::joint& j = r.joints[std::size_t(joint)];
-    const Eigen::Quaterniond q(robots::rpy_rotation<double>(j.origin.rpy));
+    const Eigen::Quaterniond q(robots::pose_rotation<double>(j.origin));
     const double quat[4] = {q.w(), q.x(), q.y(), q.z()};
     out += "<body name=\"" + l.name + "\" pos=\"" + nums(j.origin.xyz.data(), 3) + "\" quat=\"" + nums(quat, 4) + "\">";
     inertial_xml(l, out);
@@ -61,15 +61,6 @@ void body_xml(const robots::robot& r, const robots::tree& t, int link, int joint
   for (std::size_t k = 0; k < r.joints.size(); ++k)
     if (t.parent_link[k] == link) body_xml(r, t, t.child_link[k], static_cast<int>(k), out);
   if (joint >= 0) out += "</body>";
-}
-
-/// Roll, pitch and yaw of a rotation, R = Rz(yaw) Ry(pitch) Rx(roll) (URDF's convention).
-/// At pitch = +-pi/2 only yaw - roll (or yaw + roll) is defined: roll 0 and yaw from the
-/// first two rows' second column.
-Eigen::Vector3d rpy_of(const Eigen::Matrix3d& r) {
-  const double c = std::hypot(r(2, 1), r(2, 2)), pitch = std::atan2(-r(2, 0), c);
-  if (c == 0) return {0, pitch, std::atan2(-r(0, 1), r(1, 1))};
-  return {std::atan2(r(2, 1), r(2, 2)), pitch, std::atan2(r(1, 0), r(0, 0))};
 }
 
 }  // namespace
@@ -125,7 +116,10 @@ robots::robot robot_of(const mjModel* m, const std::vector<int>& dof_of_coordina
     for (int i = 0; i < 3; ++i) j.origin.xyz(i) = m->body_pos[3 * b + i];
     mjtNum rot[9];
     mju_quat2Mat(rot, m->body_quat + 4 * b);
-    j.origin.rpy = rpy_of(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(rot));
+    // MuJoCo's quaternion as it holds it (its roll-pitch-yaw for URDF alone).
+    j.origin.quaternion = Eigen::Vector4d(m->body_quat[4 * b], m->body_quat[4 * b + 1], m->body_quat[4 * b + 2],
+                                          m->body_quat[4 * b + 3]);
+    j.origin.rpy = robots::rpy_of(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(rot));
     if (m->body_jntnum[b] > 1)
       throw error("mujoco: body " + l.name + " has " + std::to_string(m->body_jntnum[b]) + " joints");
     if (m->body_jntnum[b] == 0) {

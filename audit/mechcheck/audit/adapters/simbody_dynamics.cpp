@@ -34,13 +34,13 @@ simbody_bridge::robot_setup setup_of(const robots::robot& r, const robots::tree&
     b.link = link;
     if (j) {
       b.joint = j->type == robots::joint_type::prismatic ? 1 : j->type == robots::joint_type::fixed ? 2 : 0;
-      copy(robots::rpy_rotation<double>(j->origin.rpy), b.rotation);
+      copy(robots::pose_rotation<double>(j->origin), b.rotation);
       copy(j->origin.xyz, b.position);
       copy(j->axis, b.axis);
       b.damping = j->damping;
     }
     if (const auto& in = r.links[std::size_t(link)].body) {
-      const Eigen::Matrix3d ro = robots::rpy_rotation<double>(in->origin.rpy);
+      const Eigen::Matrix3d ro = robots::pose_rotation<double>(in->origin);
       b.mass = in->mass;
       copy(in->origin.xyz, b.com);
       copy(Eigen::Matrix3d(ro * in->inertia * ro.transpose()), b.inertia);

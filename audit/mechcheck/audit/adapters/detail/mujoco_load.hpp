@@ -23,7 +23,7 @@ std::string robot_mjcf(const robots::robot& r);
 
 /// The robot of MuJoCo's compiled model: a link a body (its mass, body_ipos and the tensor
 /// R diag(body_inertia) R^T, R of body_iquat), a joint a body's frame in its parent's
-/// (body_pos, body_quat as roll-pitch-yaw) with its hinge or slide along jnt_axis, or fixed
+/// (body_pos, body_quat as MuJoCo holds it: robots::pose::quaternion) with its hinge or slide along jnt_axis, or fixed
 /// where the body has none; the moving joints in the order of the robot's coordinates, whose
 /// dof addresses `dof_of_coordinate` gives. Throws error for a model that is not such a tree.
 robots::robot robot_of(const mjModel* m, const std::vector<int>& dof_of_coordinate);
