@@ -96,6 +96,32 @@ TEST(exec_dynamics, a_childs_kinematics_are_held_to_forward_kinematics_and_a_jac
   EXPECT_NE(w.counterexample_urdf.find("<robot"), std::string::npos);
 }
 
+TEST(exec_dynamics, a_child_that_says_floating_base_is_held_on_floating_robots_and_a_base_velocity_in_the_world_is_caught) {
+  // "floating_base": true: the floating robots reach the child in the state's layout (q of 7
+  // + n, the rest 6 + n) and are held as the fixed ones; read with the base's linear velocity
+  // in the world instead of its frame, the bias forces disagree.
+  const audit::exec_dynamics_target t = audit::exec_dynamics(child("floating"));
+  EXPECT_EQ(t.library.no_floating_base, "");
+  const audit::dynamics_campaign c = audit::run_dynamics_campaign(t.library, few(20));
+  EXPECT_TRUE(c.agrees()) << c.disagreement << c.note;
+  EXPECT_EQ(c.refused, 0) << c.first_refusal;
+  int floating = 0;
+  for (const auto& f : c.figures) {
+    if (f.quantity == audit::dynamics_quantity::mass_matrix) floating = f.floating_checked;
+    if (f.checked == 0) continue;
+    EXPECT_EQ(f.checked, 20) << audit::dynamics_quantity_name(f.quantity);
+    EXPECT_LE(f.largest, f.budget) << audit::dynamics_quantity_name(f.quantity);
+  }
+  EXPECT_GE(floating, 5);
+  const audit::exec_dynamics_target wrong = audit::exec_dynamics(child("floating_world"));
+  const audit::dynamics_campaign w = audit::run_dynamics_campaign(wrong.library, few(20));
+  ASSERT_FALSE(w.agrees());
+  EXPECT_NE(w.counterexample_urdf.find("type=\"floating\""), std::string::npos) << w.counterexample_urdf;
+  // A child without the flag is not sent them.
+  const audit::exec_dynamics_target fixed = audit::exec_dynamics(child("right"));
+  EXPECT_NE(fixed.library.no_floating_base.find("\"floating_base\": true"), std::string::npos);
+}
+
 TEST(exec_dynamics, a_flipped_bias_sign_is_caught_and_shrunk) {
   const audit::exec_dynamics_target t = audit::exec_dynamics(child("bias_sign"));
   const audit::dynamics_campaign c = audit::run_dynamics_campaign(t.library, few(20));

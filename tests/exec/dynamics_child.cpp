@@ -19,6 +19,11 @@
 //                 robot's forward kinematics in double (robots/kinematics.hpp)
 //   child_frame   as `kinematics`, its frame Jacobians' columns in each link's own frame
 //                 (the audit must disagree)
+//   floating      says "floating_base": true: on a floating base M, h, tau, qddot, the centre
+//                 of mass, J_c and A_G in the state's layout (robots/floating.hpp), fixed robots
+//                 as `right` with the same three kinematics
+//   floating_world  as `floating`, the base's linear velocity read as in the world (the
+//                 audit must disagree)
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -26,10 +31,12 @@
 #include <memory>
 #include <string>
 
+#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
 #include "mechcheck/audit/problems/urdf.hpp"
 #include "mechcheck/robots/dynamics.hpp"
+#include "mechcheck/robots/floating.hpp"
 #include "mechcheck/robots/kinematics.hpp"
 
 using json = nlohmann::json;
@@ -56,13 +63,18 @@ void send(const json& j) { std::cout << j.dump() << "\n" << std::flush; }
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "right";
   const bool kinematics = mode == "kinematics" || mode == "child_frame";
+  const bool floating = mode == "floating" || mode == "floating_world";
   json quantities = mode == "mass_only" ? json{"mass_matrix"} : json{"mass_matrix", "bias", "inverse", "forward"};
   if (kinematics)
     for (const char* k : {"frame_poses", "frame_jacobians", "frame_bias_accelerations", "link_com_jacobians",
                           "centre_of_mass", "com_jacobian", "centroidal_momentum_matrix"})
       quantities.push_back(k);
-  send({{"protocol", "mechcheck"}, {"version", 1}, {"kind", "dynamics"}, {"name", "test_dynamics/" + mode},
-        {"origin", "tests/exec/dynamics_child.cpp"}, {"quantities", quantities}});
+  if (floating)
+    for (const char* k : {"centre_of_mass", "com_jacobian", "centroidal_momentum_matrix"}) quantities.push_back(k);
+  json hello = {{"protocol", "mechcheck"}, {"version", 1}, {"kind", "dynamics"}, {"name", "test_dynamics/" + mode},
+                {"origin", "tests/exec/dynamics_child.cpp"}, {"quantities", quantities}};
+  if (floating) hello["floating_base"] = true;
+  send(hello);
   std::map<long long, std::unique_ptr<robots::robot_model<double>>> models;
   int asked = 0;
   std::string line;
@@ -108,6 +120,41 @@ int main(int argc, char** argv) {
     }
     if (mode == "crash_third" && ++asked == 3) std::abort();
     const auto& m = *models.at(r.at("model").get<long long>());
+    if (m.description.floating) {  // the state's layout: q = (p; w x y z; joints), u = (v_b; w_b; rates)
+      const mechcheck::dynamic_vector<double> x = vector_of(r.at("q"));
+      const Eigen::Index n = x.size() - 7;
+      const robots::base_pose<double> b{
+          Eigen::Quaterniond(x(3), x(4), x(5), x(6)).normalized().toRotationMatrix(), x.head<3>()};
+      const mechcheck::dynamic_vector<double> q = x.tail(n);
+      mechcheck::dynamic_vector<double> u =
+          r.contains("qdot") ? vector_of(r.at("qdot")) : mechcheck::dynamic_vector<double>::Zero(n + 6).eval();
+      if (mode == "floating_world") u.head<3>() = b.rotation.transpose() * u.head<3>().eval();
+      using row_major = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+      if (op == "mass_matrix") {
+        const row_major mm = robots::floating_recursive_mass_matrix(m, b, q);
+        send({{"m", numbers(mm.data(), mm.size())}});
+      } else if (op == "bias") {
+        const mechcheck::dynamic_vector<double> h = robots::floating_recursive_bias(m, b, q, u);
+        send({{"h", numbers(h.data(), h.size())}});
+      } else if (op == "inverse") {
+        const mechcheck::dynamic_vector<double> tau =
+            robots::floating_recursive_inverse_dynamics(m, b, q, u, vector_of(r.at("qddot")));
+        send({{"tau", numbers(tau.data(), tau.size())}});
+      } else if (op == "forward") {
+        const mechcheck::dynamic_vector<double> a = robots::floating_forward_dynamics(m, b, q, u, vector_of(r.at("tau")));
+        send({{"qddot", numbers(a.data(), a.size())}});
+      } else if (op == "centre_of_mass") {
+        const mechcheck::vector3<double> c = robots::floating_centre_of_mass(m, b, q);
+        send({{"com", numbers(c.data(), 3)}});
+      } else if (op == "com_jacobian" || op == "centroidal_momentum_matrix") {
+        const row_major j = op == "com_jacobian" ? robots::floating_com_jacobian(m, b, q)
+                                                 : robots::floating_centroidal_momentum_matrix(m, b, q);
+        send({{op == "com_jacobian" ? "jc" : "ag", numbers(j.data(), j.size())}});
+      } else {
+        send({{"error", "unknown request " + op}});
+      }
+      continue;
+    }
     const auto q = vector_of(r.at("q"));
     const auto n = q.size();
     const auto qdot = r.contains("qdot") ? vector_of(r.at("qdot")) : mechcheck::dynamic_vector<double>::Zero(n).eval();

@@ -151,6 +151,9 @@ struct handshake_fields {
   double epsilon = 0x1p-52;
   std::vector<integrator_fields> integrators;  ///< kind "engine"
   std::vector<dynamics_quantity> quantities;   ///< kind "dynamics": those it computes
+  /// kind "dynamics": "floating_base": true, it takes robots on a floating base (their state
+  /// in dynamics_state's layout); without it they are refused before they reach it.
+  bool floating_base = false;
 };
 handshake_fields parse_handshake(std::string_view line, std::string_view kind);
 

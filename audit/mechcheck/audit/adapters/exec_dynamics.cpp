@@ -47,7 +47,8 @@ class exec_dynamics_model final : public dynamics_model {
         urdf_(to_urdf(robot)),
         gravity_(robot.gravity),
         robot_(robot.name),
-        n_(robots::validate(robot).dofs),
+        n_(robots::validate(robot).dofs + (robot.floating ? 6 : 0)),
+        nq_(n_ + (robot.floating ? 1 : 0)),
         links_(static_cast<int>(robot.links.size())) {
     load();
   }
@@ -152,9 +153,12 @@ class exec_dynamics_model final : public dynamics_model {
       throw exec_error(std::string("\"held\": ") + e.what());
     }
     r.gravity = gravity_;
-    const int dofs = robots::validate(r).dofs;
-    if (dofs != n_)
-      throw exec_error("\"held\": a robot of " + std::to_string(dofs) + " moving joints, the robot " + std::to_string(n_));
+    const bool floating = nq_ != n_;
+    const int dofs = robots::validate(r).dofs, joints = n_ - (floating ? 6 : 0);
+    if (dofs != joints || r.floating != floating)
+      throw exec_error("\"held\": a robot of " + std::to_string(dofs) + " moving joints" +
+                       (r.floating ? " on a floating base" : "") + ", the robot " + std::to_string(joints) +
+                       (floating ? " on a floating base" : ""));
     return r;
   }
 
@@ -175,12 +179,12 @@ class exec_dynamics_model final : public dynamics_model {
   bool ask(dynamics_quantity quantity, const fields& in, int count, std::vector<double>& out) {
     if (std::find(offered_.begin(), offered_.end(), quantity) == offered_.end()) return false;
     for (const auto& [name, v] : in)
-      if (v->size() != n_)
-        throw dimension_error("exec::" + s_->name + ": " + quantity_op(quantity) + ": the robot has " + std::to_string(n_) +
-                              " coordinates, given " + name + " of " + std::to_string(v->size()));
+      if (v->size() != size_of(name))
+        throw dimension_error("exec::" + s_->name + ": " + quantity_op(quantity) + ": the robot has " +
+                              std::to_string(size_of(name)) + " components of " + name + ", given " + std::to_string(v->size()));
     if (!loaded_into_live()) load();  // the child that held the model failed since
     json request = {{"op", quantity_op(quantity)}, {"model", id_}};
-    for (const auto& [name, v] : in) request[name] = numbers_json(v->data(), n_, s_->decimal);
+    for (const auto& [name, v] : in) request[name] = numbers_json(v->data(), v->size(), s_->decimal);
     const std::string what = std::string(quantity_op(quantity)) + " of model " + std::to_string(id_) + " (robot " +
                              robot_ + ") at q = " + vector_text(*in.front().second);
     const json reply = exchange(*s_, request, what);
@@ -197,12 +201,17 @@ class exec_dynamics_model final : public dynamics_model {
     return true;
   }
 
+  /// q has 7 + n components on a floating base (the base's position and quaternion), every
+  /// other vector 6 + n (dynamics_state's layout).
+  int size_of(const std::string& name) const { return name == "q" ? nq_ : n_; }
+
   std::shared_ptr<session> s_;
   std::vector<dynamics_quantity> offered_;
   std::string urdf_;
   Eigen::Vector3d gravity_;
   std::string robot_;
-  int n_ = 0;
+  int n_ = 0;   ///< velocities: the moving joints, and the base's six on a floating base
+  int nq_ = 0;  ///< coordinates: n_, and one more on a floating base (its quaternion's four)
   int links_ = 0;  ///< the robot's links, in the order of its <link> elements
   long long id_ = 0;
   int generation_ = 0;  ///< the session's failures when the model was loaded
@@ -217,7 +226,10 @@ exec_dynamics_target exec_dynamics(const std::vector<std::string>& command, cons
   target.library.name = "exec::" + h.name;
   target.library.origin = served_by(h.origin, command);
   target.library.selector = "--exec-dynamics -- " + command_text(command);
-  target.library.no_floating_base = "the exec protocol's dynamics kind carries robots fixed to the world only";
+  if (!h.floating_base)
+    target.library.no_floating_base = "the child's handshake does not say \"floating_base\": true (docs/protocol.md)";
+  else
+    target.library.no_floating_base.clear();
   const std::vector<dynamics_quantity> offered = h.quantities;
   target.library.load = [s, offered](const robots::robot& robot) -> std::unique_ptr<dynamics_model> {
     return std::make_unique<exec_dynamics_model>(s, offered, robot);

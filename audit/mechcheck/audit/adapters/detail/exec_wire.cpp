@@ -236,7 +236,7 @@ exec_protocol::handshake_fields handshake_of(const json& h, std::string_view kin
                           "shapes_without_mass", "precision", "integrators"},
                       what);
   else if (kind == "dynamics")
-    only_known_fields(h, {"protocol", "version", "kind", "name", "origin", "numbers", "quantities"}, what);
+    only_known_fields(h, {"protocol", "version", "kind", "name", "origin", "numbers", "quantities", "floating_base"}, what);
   else
     only_known_fields(h, {"protocol", "version", "kind", "name", "origin", "claims", "structure", "numbers"}, what);
   exec_protocol::handshake_fields out;
@@ -257,7 +257,8 @@ exec_protocol::handshake_fields handshake_of(const json& h, std::string_view kin
       throw exec_error(what + ": \"numbers\" must be \"hex\" or \"decimal\", got " + excerpt_json(*it));
     out.decimal = *it == "decimal";
   }
-  for (const auto& [key, flag] : {std::pair{"shapes", &out.shapes}, std::pair{"shapes_without_mass", &out.shapes_without_mass}})
+  for (const auto& [key, flag] : {std::pair{"shapes", &out.shapes}, std::pair{"shapes_without_mass", &out.shapes_without_mass},
+                                  std::pair{"floating_base", &out.floating_base}})
     if (const auto it = h.find(key); it != h.end()) {
       if (!it->is_boolean()) throw exec_error(what + ": \"" + key + "\" must be true or false");
       *flag = it->get<bool>();
