@@ -62,6 +62,22 @@ scenario robot_frame(std::string name, const robots::robot& r, double t_end) {
   return s;
 }
 
+/// The robot's numbers as a reference's key: its URDF (every number at 17 digits), and the
+/// quaternion of each pose that holds one (robots::pose::quaternion: a library's held robot),
+/// which URDF's roll-pitch-yaw only approximates.
+std::string model_text(const robots::robot& r) {
+  std::string out = to_urdf(r);
+  const auto quaternion = [&out](const std::string& what, const robots::pose& p) {
+    if (!p.quaternion) return;
+    out += "\nquaternion of " + what + ":";
+    for (int i = 0; i < 4; ++i) out += " " + exact_text((*p.quaternion)(i));
+  };
+  for (const robots::joint& j : r.joints) quaternion("joint " + j.name, j.origin);
+  for (const robots::link& l : r.links)
+    if (l.body) quaternion("link " + l.name + " inertial", l.body->origin);
+  return out;
+}
+
 /// (c, P, L_G) of a floating robot at (q, u) in T (robots/floating.hpp).
 template <class T>
 dynamic_vector<T> floating_momenta(const robots::robot_model<T>& m, const Eigen::VectorXd& q, const Eigen::VectorXd& u) {
@@ -191,7 +207,7 @@ scenario robot_scenario(std::string name, const robots::robot& r, const Eigen::V
   m.name = "engine scenario " + s.name;
   m.description = m.name;
   m.source = "audit/engines/robot_scenarios.cpp";
-  m.parameters = to_urdf(r);
+  m.parameters = model_text(r);
   for (Eigen::Index i = 0; i < n; ++i) m.q0.push_back(exact_text(q0(i)));
   m.t_end = exact_text(t_end);
   m.separable = false;
